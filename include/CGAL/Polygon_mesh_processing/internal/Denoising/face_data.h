@@ -1,0 +1,235 @@
+// Copyright (c) 2026 The intrinsic denoising package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Flat, index-based copies of a triangle mesh and of its per-face data
+// (centroids, areas, unit normals). Every stage of the denoisers works on
+// these arrays; the user's mesh is read once and written once.
+
+#ifndef CGAL_PMP_INTERNAL_DENOISING_FACE_DATA_H
+#define CGAL_PMP_INTERNAL_DENOISING_FACE_DATA_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/parallel.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Denoising {
+
+using Vec3 = std::array<double, 3>;
+
+inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+inline Vec3 operator*(double s, const Vec3& a) { return {s * a[0], s * a[1], s * a[2]}; }
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 cross(const Vec3& a, const Vec3& b)
+{
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline double squared_norm(const Vec3& a) { return dot(a, a); }
+inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+
+// A triangle mesh as arrays: vertex positions and, per face, its three vertex
+// indices in the face's orientation; plus vertex -> incident faces in CSR form.
+struct Flat_mesh
+{
+  std::vector<Vec3> points;                   // by vertex index
+  std::vector<std::array<std::uint32_t, 3>> triangles; // by face index
+  std::vector<std::uint32_t> vertex_face_offsets;      // size nv + 1
+  std::vector<std::uint32_t> vertex_faces;
+
+  std::size_t number_of_vertices() const { return points.size(); }
+  std::size_t number_of_faces() const { return triangles.size(); }
+};
+
+// Throws std::invalid_argument with a message naming the problem if `tmesh`
+// cannot be denoised: a face that is not a triangle, or a non-finite coordinate
+// (checked in `make_flat_mesh`).
+template <typename TriangleMesh>
+void check_triangle_faces(const TriangleMesh& tmesh, const char* function_name)
+{
+  for(auto f : faces(tmesh))
+  {
+    std::size_t degree = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, tmesh), tmesh))
+    {
+      (void)h;
+      ++degree;
+    }
+    if(degree != 3)
+      throw std::invalid_argument(std::string(function_name) + ": the mesh has a face with " +
+                                  std::to_string(degree) +
+                                  " vertices; only triangle meshes are supported "
+                                  "(triangulate it first, e.g. with triangulate_faces()).");
+  }
+}
+
+template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap, typename FaceIndexMap>
+Flat_mesh make_flat_mesh(const TriangleMesh& tmesh, VertexPointMap vpm, VertexIndexMap vim,
+                         FaceIndexMap fim, const char* function_name)
+{
+  check_triangle_faces(tmesh, function_name);
+  Flat_mesh m;
+  const std::size_t nv = num_vertices(tmesh);
+  const std::size_t nf = num_faces(tmesh);
+  if(nv >= std::size_t((std::numeric_limits<std::uint32_t>::max)()) ||
+     3 * nf >= std::size_t((std::numeric_limits<std::uint32_t>::max)()))
+    throw std::invalid_argument(std::string(function_name) + ": the mesh is too large (more than 2^32 entries).");
+  m.points.resize(nv);
+  for(auto v : vertices(tmesh))
+  {
+    const auto& p = get(vpm, v);
+    const Vec3 q = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
+      throw std::invalid_argument(std::string(function_name) +
+                                  ": the mesh has a vertex with a NaN or infinite coordinate.");
+    m.points[get(vim, v)] = q;
+  }
+  m.triangles.resize(nf);
+  for(auto f : faces(tmesh))
+  {
+    auto& t = m.triangles[get(fim, f)];
+    int k = 0;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, tmesh), tmesh))
+      t[k++] = static_cast<std::uint32_t>(get(vim, v));
+  }
+  // vertex -> faces, faces listed in increasing index order
+  m.vertex_face_offsets.assign(nv + 1, 0);
+  for(const auto& t : m.triangles)
+    for(std::uint32_t v : t)
+      ++m.vertex_face_offsets[v + 1];
+  for(std::size_t v = 0; v < nv; ++v)
+    m.vertex_face_offsets[v + 1] += m.vertex_face_offsets[v];
+  m.vertex_faces.resize(m.vertex_face_offsets[nv]);
+  std::vector<std::uint32_t> fill(m.vertex_face_offsets.begin(), m.vertex_face_offsets.end() - 1);
+  for(std::size_t f = 0; f < nf; ++f)
+    for(std::uint32_t v : m.triangles[f])
+      m.vertex_faces[fill[v]++] = static_cast<std::uint32_t>(f);
+  return m;
+}
+
+// Relative threshold under which a face counts as degenerate (zero area): its
+// normal is then the zero vector, so that it never produces a NaN.
+constexpr double degenerate_face_tolerance = 1e-12;
+
+// Unit normal (or zero for a degenerate face), area and centroid of face f.
+inline void face_geometry(const std::vector<Vec3>& points, const std::array<std::uint32_t, 3>& t,
+                          Vec3& normal, double& area, Vec3& centroid)
+{
+  const Vec3& a = points[t[0]];
+  const Vec3& b = points[t[1]];
+  const Vec3& c = points[t[2]];
+  const Vec3 ab = b - a, ac = c - a, bc = c - b;
+  const Vec3 n = cross(ab, ac);
+  const double len = norm(n);
+  const double scale = squared_norm(ab) + squared_norm(ac) + squared_norm(bc);
+  if(len > degenerate_face_tolerance * scale && std::isfinite(len))
+    normal = (1. / len) * n;
+  else
+    normal = {0., 0., 0.};
+  area = 0.5 * len;
+  centroid = (1. / 3.) * (a + b + c);
+}
+
+// Per-face data by face index.
+struct Face_data
+{
+  std::vector<Vec3> normals;
+  std::vector<double> areas;
+  std::vector<Vec3> centroids;
+};
+
+template <typename ConcurrencyTag>
+void compute_face_data(const Flat_mesh& m, const std::vector<Vec3>& points, Face_data& fd)
+{
+  const std::size_t nf = m.number_of_faces();
+  fd.normals.resize(nf);
+  fd.areas.resize(nf);
+  fd.centroids.resize(nf);
+  for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t f = b; f < e; ++f)
+      face_geometry(points, m.triangles[f], fd.normals[f], fd.areas[f], fd.centroids[f]);
+  });
+}
+
+// Mean distance between the centroids of edge-adjacent faces: the paper's d.
+// Returns 0 if no two faces share an edge.
+inline double mean_adjacent_centroid_distance(const Flat_mesh& m, const Face_data& fd)
+{
+  double sum = 0.;
+  std::size_t count = 0;
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+  {
+    const auto& t = m.triangles[f];
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+      // faces around a that also contain b, with a larger index (each pair once)
+      for(std::uint32_t i = m.vertex_face_offsets[a]; i < m.vertex_face_offsets[a + 1]; ++i)
+      {
+        const std::uint32_t g = m.vertex_faces[i];
+        if(g <= f)
+          continue;
+        const auto& u = m.triangles[g];
+        if(u[0] == b || u[1] == b || u[2] == b)
+        {
+          sum += norm(fd.centroids[g] - fd.centroids[f]);
+          ++count;
+        }
+      }
+    }
+  }
+  return count == 0 ? 0. : sum / double(count);
+}
+
+// Mean edge length (each edge once), used to scale noise.
+inline double mean_edge_length(const Flat_mesh& m)
+{
+  double sum = 0.;
+  std::size_t count = 0;
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+  {
+    const auto& t = m.triangles[f];
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+      // count edge (a,b) once: from the face of smallest index containing it
+      bool first = true;
+      for(std::uint32_t i = m.vertex_face_offsets[a]; i < m.vertex_face_offsets[a + 1] && first; ++i)
+      {
+        const std::uint32_t g = m.vertex_faces[i];
+        if(g >= f)
+          break;
+        const auto& u = m.triangles[g];
+        if(u[0] == b || u[1] == b || u[2] == b)
+          first = false;
+      }
+      if(first)
+      {
+        sum += norm(m.points[b] - m.points[a]);
+        ++count;
+      }
+    }
+  }
+  return count == 0 ? 0. : sum / double(count);
+}
+
+} // namespace Denoising
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,39 @@
+// Copyright (c) 2026 The intrinsic denoising package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Entry point for the package's named parameters. Include this (all public
+// headers of the package do) rather than <CGAL/Named_function_parameters.h>.
+
+#ifndef CGAL_PMP_INTERNAL_DENOISING_NAMED_PARAMETERS_H
+#define CGAL_PMP_INTERNAL_DENOISING_NAMED_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#ifndef CGAL_PMP_DENOISING_NAMED_PARAMETERS_ADDED
+#error "The denoising package's named parameters are missing: CGAL's \
+<CGAL/STL_Extension/internal/parameters_interface.h> was found before the \
+package's own. Put the package's include directory before CGAL's (-I, not \
+-isystem) on the include path."
+#endif
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+
+/// \ingroup PMP_denoising_grp
+/// How the path from face `i` to a neighbour `j` is chosen; the sums of eq. 9
+/// run along that path.
+enum class Intrinsic_path_strategy {
+  /// Section 4 of the paper: neighbours projected on the tangent plane of `i`,
+  /// split into six regions by their areal coordinates, sorted by distance, and
+  /// linked by the square pattern (node `k` hangs from node `(ceil(sqrt(k))-1)^2`).
+  SQUARE_PATTERN,
+  /// The path is `{i, j}` (no intermediate face): with it the intrinsic filter
+  /// degenerates to a bilateral normal filter on the same neighbourhood.
+  DIRECT
+};
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,24 @@
+// The denoising package's additions to CGAL's named-parameter list, in the
+// form CGAL_add_named_parameter(tag_type, tag_value, function_name).
+// Included (several times, no guard) by
+// <CGAL/STL_Extension/internal/parameters_interface.h> of this package.
+// Parameters CGAL already has and whose meaning is the same are reused
+// instead (number_of_iterations, neighbor_radius, face_normal_map,
+// vertex_is_constrained_map, random_seed, geom_traits, vertex_point_map,
+// vertex_index_map, face_index_map).
+
+// sigma_s and sigma_r of the kernels g(d^s; sigma_s) g(d^r; sigma_r), eq. 8
+CGAL_add_named_parameter(sigma_spatial_t, sigma_spatial, sigma_spatial)
+CGAL_add_named_parameter(sigma_range_t, sigma_range, sigma_range)
+// exponents n (for d^s) and m (for d^r) of eq. 9
+CGAL_add_named_parameter(spatial_exponent_t, spatial_exponent, spatial_exponent)
+CGAL_add_named_parameter(range_exponent_t, range_exponent, range_exponent)
+// v_iter of Algorithm 1: iterations of the vertex update (eq. 10) per normal pass
+CGAL_add_named_parameter(vertex_iterations_t, vertex_iterations, vertex_iterations)
+// neighbourhood radius as a multiple of the mean distance between centroids of
+// edge-adjacent faces (used unless neighbor_radius gives it absolutely)
+CGAL_add_named_parameter(relative_neighbor_radius_t, relative_neighbor_radius, relative_neighbor_radius)
+// whether face i's own normal takes part in its average (weight A_i)
+CGAL_add_named_parameter(include_self_weight_t, include_self_weight, include_self_weight)
+// how the path from face i to neighbour j is chosen (Intrinsic_path_strategy)
+CGAL_add_named_parameter(path_strategy_t, path_strategy, path_strategy)

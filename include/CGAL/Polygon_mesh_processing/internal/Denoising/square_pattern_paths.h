@@ -1,0 +1,166 @@
+// Copyright (c) 2026 The intrinsic denoising package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Section 4 of the paper: the square-pattern paths from face i to each of its
+// neighbours, stored as one tree per face (each node knows its parent).
+
+#ifndef CGAL_PMP_INTERNAL_DENOISING_SQUARE_PATTERN_PATHS_H
+#define CGAL_PMP_INTERNAL_DENOISING_SQUARE_PATTERN_PATHS_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Denoising {
+
+// The paths of every face, as trees rooted at the face. The nodes of face i
+// are nodes offsets[i] .. offsets[i+1]-1; node k is face `face[k]` and its
+// parent is node `offsets[i] + parent[k]`, or face i itself when parent[k] is
+// `root`. A parent always comes before its children, so one forward sweep
+// over a face's nodes accumulates every path sum (eq. 9).
+struct Path_forest
+{
+  static constexpr std::int32_t root = -1;
+  std::vector<std::uint32_t> offsets;
+  std::vector<std::uint32_t> face;
+  std::vector<std::int32_t> parent; // local to the face's node range
+
+  std::size_t number_of_faces() const { return offsets.empty() ? 0 : offsets.size() - 1; }
+  std::size_t max_nodes_per_face() const
+  {
+    std::size_t mx = 0;
+    for(std::size_t f = 0; f + 1 < offsets.size(); ++f)
+      mx = (std::max)(mx, std::size_t(offsets[f + 1] - offsets[f]));
+    return mx;
+  }
+};
+
+// Square pattern: parent of rank k (k = 1, 2, ...) in a region is the rank
+// (ceil(sqrt(k)) - 1)^2, rank 0 standing for face i: 1 -> i, 2..4 -> 1,
+// 5..9 -> 4, 10..16 -> 9, ...
+inline std::uint32_t square_pattern_parent_rank(std::uint32_t k)
+{
+  std::uint32_t s = 0;
+  while(s * s < k)
+    ++s; // s = ceil(sqrt(k))
+  return (s - 1) * (s - 1);
+}
+
+// Region (0..5) of a point with areal coordinates (l0, l1, l2) relative to a
+// triangle, or -1 if it lies inside or on the triangle. The six outer regions
+// are the sign patterns with one or two negative coordinates.
+inline int areal_region(double l0, double l1, double l2)
+{
+  const int mask = (l0 < 0. ? 1 : 0) | (l1 < 0. ? 2 : 0) | (l2 < 0. ? 4 : 0);
+  switch(mask)
+  {
+  case 1: return 0; // (-,+,+): beyond the edge opposite vertex 0
+  case 3: return 1; // (-,-,+): beyond vertex 2
+  case 2: return 2; // (+,-,+): beyond the edge opposite vertex 1
+  case 6: return 3; // (+,-,-): beyond vertex 0
+  case 4: return 4; // (+,+,-): beyond the edge opposite vertex 2
+  case 5: return 5; // (-,+,-): beyond vertex 1
+  default: return -1; // inside (mask 0); mask 7 cannot happen (coordinates sum to 1)
+  }
+}
+
+// Areal coordinates of the projection of p on the plane of triangle (a, b, c)
+// with unit normal n. Returns false if the triangle is degenerate.
+inline bool projected_areal_coordinates(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n,
+                                        const Vec3& p, std::array<double, 3>& l)
+{
+  const double twice_area = dot(cross(b - a, c - a), n);
+  if(!(twice_area > 0.))
+    return false;
+  // Projecting p along n changes none of these signed areas: each is a
+  // determinant with n, so the projection is implicit.
+  l[0] = dot(cross(b - p, c - p), n) / twice_area;
+  l[1] = dot(cross(c - p, a - p), n) / twice_area;
+  l[2] = 1. - l[0] - l[1];
+  return true;
+}
+
+// Builds the square-pattern forest on the mesh as it is (the paper computes
+// it once, on the input mesh). Neighbours whose projected centroid falls inside
+// face i are dropped (NOTES 6). For a degenerate face i (zero normal) the
+// regions are undefined: all its neighbours hang directly from i.
+inline Path_forest square_pattern_paths(const Flat_mesh& m, const Face_data& fd, const Csr& neighbors)
+{
+  const std::size_t nf = m.number_of_faces();
+  Path_forest forest;
+  forest.offsets.assign(nf + 1, 0);
+  forest.face.reserve(neighbors.items.size());
+  forest.parent.reserve(neighbors.items.size());
+  std::array<std::vector<std::pair<double, std::uint32_t>>, 6> regions;
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    for(auto& r : regions)
+      r.clear();
+    const auto& t = m.triangles[i];
+    const Vec3& ci = fd.centroids[i];
+    const Vec3& ni = fd.normals[i];
+    const bool degenerate = squared_norm(ni) == 0.;
+    for(std::uint32_t k = neighbors.begin(i); k < neighbors.end(i); ++k)
+    {
+      const std::uint32_t j = neighbors.items[k];
+      const double dist = squared_norm(fd.centroids[j] - ci);
+      if(degenerate)
+      {
+        regions[0].emplace_back(dist, j);
+        continue;
+      }
+      std::array<double, 3> l;
+      if(!projected_areal_coordinates(m.points[t[0]], m.points[t[1]], m.points[t[2]], ni,
+                                      fd.centroids[j], l))
+      {
+        regions[0].emplace_back(dist, j);
+        continue;
+      }
+      const int r = areal_region(l[0], l[1], l[2]);
+      if(r >= 0)
+        regions[r].emplace_back(dist, j);
+    }
+    for(auto& r : regions)
+    {
+      std::sort(r.begin(), r.end()); // by distance, ties by face index
+      const std::int32_t start = std::int32_t(forest.face.size() - forest.offsets[i]);
+      for(std::size_t k = 1; k <= r.size(); ++k)
+      {
+        forest.face.push_back(r[k - 1].second);
+        if(degenerate)
+          forest.parent.push_back(Path_forest::root);
+        else
+        {
+          const std::uint32_t pk = square_pattern_parent_rank(std::uint32_t(k));
+          forest.parent.push_back(pk == 0 ? Path_forest::root : start + std::int32_t(pk) - 1);
+        }
+      }
+    }
+    forest.offsets[i + 1] = std::uint32_t(forest.face.size());
+  }
+  return forest;
+}
+
+// Direct paths L = {i, j}: every neighbour hangs from face i.
+inline Path_forest direct_paths(const Csr& neighbors)
+{
+  Path_forest forest;
+  forest.offsets = neighbors.offsets;
+  forest.face = neighbors.items;
+  forest.parent.assign(neighbors.items.size(), Path_forest::root);
+  return forest;
+}
+
+} // namespace Denoising
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

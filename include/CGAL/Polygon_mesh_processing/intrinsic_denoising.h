@@ -1,0 +1,302 @@
+// Copyright (c) 2026 The intrinsic denoising package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Mesh denoising via the intrinsic filter (Algorithm 1 of "Mesh denoising via
+// generalized intrinsic filter on 2D manifold"): face normals filtered with
+// weights integrated along paths (eqs. 8-9), then vertices updated (eq. 10).
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/path_weights.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/square_pattern_paths.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
+
+#include <CGAL/tags.h>
+
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Denoising {
+
+// Default parameter values of the intrinsic denoiser (see the documentation of
+// intrinsic_denoising() for how they were chosen).
+struct Intrinsic_defaults
+{
+  static constexpr unsigned int iterations = 30;
+  static constexpr unsigned int vertex_iterations = 2;
+  static constexpr double relative_radius = 4.;
+  static constexpr double sigma_spatial = 0.4;
+  static constexpr double sigma_range = 0.4;
+};
+
+// What stays fixed across the iterations of Algorithm 1: the flat mesh,
+// neighbourhoods and paths (built on the mesh as given), and the kernel.
+struct Intrinsic_setup
+{
+  Flat_mesh mesh;
+  Face_data input_faces;
+  double radius = 0.;
+  Csr neighbors;
+  Path_forest paths;
+  Intrinsic_kernel kernel;
+};
+
+template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters, typename Maps>
+Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParameters& np, const Maps& maps,
+                                     const char* fname)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Intrinsic_setup s;
+  s.kernel.sigma_spatial =
+      choose_parameter(get_parameter(np, internal_np::sigma_spatial), Intrinsic_defaults::sigma_spatial);
+  s.kernel.sigma_range = choose_parameter(get_parameter(np, internal_np::sigma_range), Intrinsic_defaults::sigma_range);
+  s.kernel.spatial_exponent = choose_parameter(get_parameter(np, internal_np::spatial_exponent), 1.);
+  s.kernel.range_exponent = choose_parameter(get_parameter(np, internal_np::range_exponent), 1.);
+  s.kernel.include_self = choose_parameter(get_parameter(np, internal_np::include_self_weight), false);
+  require_positive(s.kernel.sigma_spatial, fname, "sigma_spatial");
+  require_positive(s.kernel.sigma_range, fname, "sigma_range");
+  require_positive(s.kernel.spatial_exponent, fname, "spatial_exponent");
+  require_positive(s.kernel.range_exponent, fname, "range_exponent");
+  const double absolute_radius = choose_parameter(get_parameter(np, internal_np::neighbor_radius), -1.);
+  const double relative_radius =
+      choose_parameter(get_parameter(np, internal_np::relative_neighbor_radius), Intrinsic_defaults::relative_radius);
+  if(absolute_radius != -1.)
+    require_positive(absolute_radius, fname, "neighbor_radius");
+  else
+    require_positive(relative_radius, fname, "relative_neighbor_radius");
+  const Intrinsic_path_strategy strategy =
+      choose_parameter(get_parameter(np, internal_np::path_strategy), Intrinsic_path_strategy::SQUARE_PATTERN);
+
+  s.mesh = maps.flat(tmesh, fname);
+  compute_face_data<ConcurrencyTag>(s.mesh, s.mesh.points, s.input_faces);
+  s.radius = absolute_radius != -1.
+                 ? absolute_radius
+                 : relative_radius * mean_adjacent_centroid_distance(s.mesh, s.input_faces);
+  s.neighbors = geometric_neighborhoods<ConcurrencyTag>(s.mesh, s.input_faces.centroids, s.radius);
+  switch(strategy)
+  {
+  case Intrinsic_path_strategy::DIRECT: s.paths = direct_paths(s.neighbors); break;
+  case Intrinsic_path_strategy::SQUARE_PATTERN:
+  default: s.paths = square_pattern_paths(s.mesh, s.input_faces, s.neighbors); break;
+  }
+  return s;
+}
+
+} // namespace Denoising
+} // namespace internal
+
+
+/*!
+  \ingroup PMP_denoising_grp
+
+  \brief one pass of the intrinsic filter (eq. 8 of the paper) on the face
+  normals of `tmesh`; writes the filtered normals to `filtered_normals` and
+  leaves the mesh unchanged.
+
+  For each face \f$i\f$ with unit normal \f$n_i\f$ and neighbourhood
+  \f$N_i\f$ (the faces connected to \f$i\f$ through vertices whose centroid is
+  within `neighbor_radius` of \f$c_i\f$),
+  \f[ \bar n_i = \frac{1}{W_i}\sum_{j\in N_i} A_j\, g(d^s_{ij};\sigma_s)\, g(d^r_{ij};\sigma_r)\, n_j, \qquad
+      g(x;\sigma) = e^{-x^2/2\sigma^2}, \f]
+  with, along the path \f$L = (i = x_0, x_1, \dots, x_k = j)\f$ (eq. 9),
+  \f$ d^s = (\sum_x \|n_{x+1} - n_x\|^n)^{1/n}\f$ and
+  \f$ d^r = (\sum_{x\in L} \|n_x - n_i\|^m)^{1/m}\f$, and \f$W_i\f$ the norm of
+  the sum, so that \f$\bar n_i\f$ is a unit vector. The paths are those of
+  `path_strategy`, built on the mesh as given.
+
+  The neighbourhood and paths are rebuilt at every call; `intrinsic_denoising()`
+  builds them once for all its iterations.
+
+  \tparam FaceNormalMap a model of `WritablePropertyMap` with face descriptors
+          as keys and `GeomTraits::Vector_3` as values
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{sigma_spatial}
+      \cgalParamDescription{\f$\sigma_s\f$, the width of the kernel on \f$d^s\f$ (sum of normal changes along the path)}
+      \cgalParamType{double}
+      \cgalParamDefault{`0.4`}
+    \cgalParamNEnd
+    \cgalParamNBegin{sigma_range}
+      \cgalParamDescription{\f$\sigma_r\f$, the width of the kernel on \f$d^r\f$ (sum of normal differences to \f$n_i\f$ along the path)}
+      \cgalParamType{double}
+      \cgalParamDefault{`0.4`}
+    \cgalParamNEnd
+    \cgalParamNBegin{spatial_exponent}
+      \cgalParamDescription{the exponent \f$n\f$ of \f$d^s\f$ (1: L1, the paper's choice)}
+      \cgalParamType{double}
+      \cgalParamDefault{`1`}
+    \cgalParamNEnd
+    \cgalParamNBegin{range_exponent}
+      \cgalParamDescription{the exponent \f$m\f$ of \f$d^r\f$}
+      \cgalParamType{double}
+      \cgalParamDefault{`1`}
+    \cgalParamNEnd
+    \cgalParamNBegin{neighbor_radius}
+      \cgalParamDescription{the radius \f$r\f$ of the geometric neighbourhood, in the mesh's length unit}
+      \cgalParamType{double}
+      \cgalParamDefault{`relative_neighbor_radius` times \f$d\f$}
+    \cgalParamNEnd
+    \cgalParamNBegin{relative_neighbor_radius}
+      \cgalParamDescription{the radius as a multiple of \f$d\f$, the mean distance between the centroids of edge-adjacent faces (the paper uses 2 to 6); ignored if `neighbor_radius` is given}
+      \cgalParamType{double}
+      \cgalParamDefault{`4`}
+    \cgalParamNEnd
+    \cgalParamNBegin{path_strategy}
+      \cgalParamDescription{how paths are chosen}
+      \cgalParamType{`CGAL::Polygon_mesh_processing::Intrinsic_path_strategy`}
+      \cgalParamDefault{`Intrinsic_path_strategy::SQUARE_PATTERN`}
+    \cgalParamNEnd
+    \cgalParamNBegin{include_self_weight}
+      \cgalParamDescription{if `true`, \f$A_i n_i\f$ is added to the sum; eq. 8 read literally leaves it out}
+      \cgalParamType{bool}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDescription{a property map associating points to the vertices of `tmesh`}
+      \cgalParamType{a model of `ReadablePropertyMap` with vertex descriptors as keys and `GeomTraits::Point_3` as values}
+      \cgalParamDefault{`boost::get(CGAL::vertex_point, tmesh)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_index_map}
+      \cgalParamDescription{a property map associating to each vertex an index from 0 to `num_vertices(tmesh) - 1`}
+      \cgalParamType{a model of `ReadablePropertyMap` with vertex descriptors as keys and `std::size_t` as values}
+      \cgalParamDefault{an automatically indexed internal map}
+    \cgalParamNEnd
+    \cgalParamNBegin{face_index_map}
+      \cgalParamDescription{a property map associating to each face an index from 0 to `num_faces(tmesh) - 1`}
+      \cgalParamType{a model of `ReadablePropertyMap` with face descriptors as keys and `std::size_t` as values}
+      \cgalParamDefault{an automatically indexed internal map}
+    \cgalParamNEnd
+    \cgalParamNBegin{geom_traits}
+      \cgalParamDescription{an instance of a geometric traits class}
+      \cgalParamType{a model of `Kernel`}
+      \cgalParamDefault{a \cgal Kernel deduced from the point type}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  A face with zero area has a zero normal: it has no weight in the sums and no
+  NaN is produced. A face whose weighted sum vanishes keeps its normal.
+
+  \pre `tmesh` is a triangle mesh with finite coordinates; the numeric
+       parameters are positive and finite. Otherwise `std::invalid_argument` is
+       thrown and nothing is written.
+*/
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh, typename FaceNormalMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filtered_normals,
+                                   const NamedParameters& np = parameters::default_values())
+{
+  namespace D = internal::Denoising;
+  static const char* fname = "intrinsic_filter_face_normals()";
+  if(faces(tmesh).empty())
+    return;
+  const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
+  const D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname);
+  std::vector<D::Vec3> out;
+  D::intrinsic_filter_pass<ConcurrencyTag>(s.paths, s.input_faces.normals, s.input_faces.areas, s.kernel, out);
+  maps.write_face_vectors(tmesh, out, filtered_normals);
+}
+
+/*!
+  \ingroup PMP_denoising_grp
+
+  \brief denoises `tmesh` with the intrinsic filter, keeping sharp edges and
+  corners: Algorithm 1 of "Mesh denoising via generalized intrinsic filter on
+  2D manifold".
+
+  Neighbourhoods and paths are computed once on the input mesh (section 4);
+  then, `number_of_iterations` times: the face normals of the current mesh are
+  filtered by one pass of eq. 8 (see `intrinsic_filter_face_normals()` for the
+  weights), and the vertices follow the filtered normals by
+  `vertex_iterations` steps of eq. 10 (see `update_vertices_from_face_normals()`).
+
+  The mesh is read once and written once, at the end: if an exception is
+  thrown, `tmesh` and the property maps are left unchanged.
+
+  Default parameters: `number_of_iterations` 30, `vertex_iterations` 2,
+  `relative_neighbor_radius` 4 (the values of the paper's figure 2);
+  \f$\sigma_s = \sigma_r = 0.4\f$, chosen by measurement on noisy fandisk (see
+  the package's benchmark). The paper tunes \f$\sigma\f$ per mesh in
+  [0.1, 0.8]: organic, finely detailed meshes want larger \f$\sigma\f$ and
+  fewer iterations.
+
+  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+          `CGAL::Parallel_if_available_tag`; the result does not depend on it.
+  \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{number_of_iterations}
+      \cgalParamDescription{\f$k_{iter}\f$, the number of normal filtering passes}
+      \cgalParamType{unsigned int}
+      \cgalParamDefault{`30`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_iterations}
+      \cgalParamDescription{\f$v_{iter}\f$, the vertex update steps after each pass}
+      \cgalParamType{unsigned int}
+      \cgalParamDefault{`2`}
+    \cgalParamNEnd
+    \cgalParamNBegin{sigma_spatial, sigma_range, spatial_exponent, range_exponent, neighbor_radius, relative_neighbor_radius, path_strategy, include_self_weight}
+      \cgalParamDescription{as for `intrinsic_filter_face_normals()`}
+    \cgalParamNEnd
+    \cgalParamNBegin{face_normal_map}
+      \cgalParamDescription{if given, receives the filtered normals of the last pass}
+      \cgalParamType{a model of `WritablePropertyMap` with face descriptors as keys and `GeomTraits::Vector_3` as values}
+      \cgalParamDefault{unused}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_is_constrained_map}
+      \cgalParamDescription{a property map telling which vertices never move}
+      \cgalParamType{a model of `ReadablePropertyMap` with vertex descriptors as keys and `bool` as values}
+      \cgalParamDefault{no vertex is constrained}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map, geom_traits}
+      \cgalParamDescription{as for `intrinsic_filter_face_normals()`; the vertex point map must also be writable}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  \pre `tmesh` is a triangle mesh with finite coordinates; the numeric
+       parameters are positive and finite. Otherwise `std::invalid_argument` is
+       thrown. An empty mesh is left as it is.
+*/
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
+          typename NamedParameters = parameters::Default_named_parameters>
+void intrinsic_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::default_values())
+{
+  namespace D = internal::Denoising;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  static const char* fname = "intrinsic_denoising()";
+  if(faces(tmesh).empty())
+    return;
+  const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
+  const unsigned int iterations =
+      choose_parameter(get_parameter(np, internal_np::number_of_iterations), D::Intrinsic_defaults::iterations);
+  const unsigned int vertex_iterations = choose_parameter(get_parameter(np, internal_np::vertex_iterations),
+                                                          D::Intrinsic_defaults::vertex_iterations);
+  D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname);
+  const std::vector<char> fixed = maps.constrained(tmesh);
+
+  std::vector<D::Vec3>& points = s.mesh.points;
+  D::Face_data current = std::move(s.input_faces);
+  std::vector<D::Vec3> filtered, centroids, next;
+  for(unsigned int it = 0; it < iterations; ++it)
+  {
+    if(it > 0)
+      D::compute_face_data<ConcurrencyTag>(s.mesh, points, current);
+    D::intrinsic_filter_pass<ConcurrencyTag>(s.paths, current.normals, current.areas, s.kernel, filtered);
+    D::update_vertices<ConcurrencyTag>(s.mesh, points, filtered, fixed, vertex_iterations, centroids, next);
+  }
+  maps.write_points(tmesh, points);
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
+    maps.write_face_vectors(tmesh, filtered, get_parameter(np, internal_np::face_normal));
+}
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif
