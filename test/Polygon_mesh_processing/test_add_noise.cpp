@@ -1,0 +1,92 @@
+// Tests of add_gaussian_noise() and add_impulsive_noise().
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Polygon_mesh_processing/add_noise.h>
+
+#include "synthetic_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef CGAL::Polyhedron_3<K> Polyhedron;
+
+template <typename M>
+std::vector<K::Point_3> positions(const M& mesh)
+{
+  std::vector<K::Point_3> p;
+  for(auto v : vertices(mesh))
+    p.push_back(get(CGAL::vertex_point, mesh, v));
+  return p;
+}
+
+TEST(AddNoise, SameSeedSameNoiseOtherSeedOtherNoise)
+{
+  Mesh a = denoising_test::cube<Mesh>(5), b = a, c = a;
+  PMP::add_gaussian_noise(a, 0.3, CGAL::parameters::random_seed(11));
+  PMP::add_gaussian_noise(b, 0.3, CGAL::parameters::random_seed(11));
+  PMP::add_gaussian_noise(c, 0.3, CGAL::parameters::random_seed(12));
+  EXPECT_EQ(positions(a), positions(b));
+  EXPECT_NE(positions(a), positions(c));
+  Polyhedron p = denoising_test::cube<Polyhedron>(5);
+  PMP::add_gaussian_noise(p, 0.3, CGAL::parameters::random_seed(11));
+  EXPECT_EQ(positions(a), positions(p));
+}
+
+TEST(AddNoise, GaussianAlongNormalsWithRelativeSigma)
+{
+  // plane grid with cells of side 1/40: mean edge length (1 + 1 + sqrt 2)/3 / 40 on
+  // interior cells; noise is along +-z only
+  Mesh mesh = denoising_test::plane_grid<Mesh>(40);
+  const auto before = positions(mesh);
+  double edge_sum = 0;
+  for(auto e : edges(mesh))
+    edge_sum += std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
+  const double mean_edge = edge_sum / num_edges(mesh);
+  PMP::add_gaussian_noise(mesh, 0.2, CGAL::parameters::random_seed(3));
+  const auto after = positions(mesh);
+  double sum = 0, sum2 = 0;
+  for(std::size_t i = 0; i < after.size(); ++i)
+  {
+    EXPECT_EQ(after[i].x(), before[i].x());
+    EXPECT_EQ(after[i].y(), before[i].y());
+    sum += after[i].z();
+    sum2 += after[i].z() * after[i].z();
+  }
+  const double n = double(after.size());
+  const double mean = sum / n, sd = std::sqrt(sum2 / n - mean * mean);
+  // 1681 samples: the sample deviation is within 5% of sigma with overwhelming probability
+  EXPECT_NEAR(sd, 0.2 * mean_edge, 0.05 * 0.2 * mean_edge);
+  EXPECT_NEAR(mean, 0., 4 * 0.2 * mean_edge / std::sqrt(n));
+}
+
+TEST(AddNoise, ImpulsiveNoiseMovesAboutTheGivenFraction)
+{
+  Mesh mesh = denoising_test::plane_grid<Mesh>(40);
+  const auto before = positions(mesh);
+  PMP::add_impulsive_noise(mesh, 0.1, 1.0, CGAL::parameters::random_seed(8));
+  const auto after = positions(mesh);
+  std::size_t moved = 0;
+  for(std::size_t i = 0; i < after.size(); ++i)
+    moved += after[i] != before[i];
+  const double fraction = double(moved) / after.size();
+  EXPECT_NEAR(fraction, 0.1, 0.025);
+}
+
+TEST(AddNoise, BadArgumentsThrowAndLeaveTheMesh)
+{
+  Mesh mesh = denoising_test::plane_grid<Mesh>(4);
+  const auto before = positions(mesh);
+  EXPECT_THROW(PMP::add_gaussian_noise(mesh, -0.1), std::invalid_argument);
+  EXPECT_THROW(PMP::add_impulsive_noise(mesh, 1.5, 0.1), std::invalid_argument);
+  EXPECT_EQ(before, positions(mesh));
+  Mesh empty;
+  EXPECT_NO_THROW(PMP::add_gaussian_noise(empty, 0.3));
+}

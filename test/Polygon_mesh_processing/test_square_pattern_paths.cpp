@@ -1,0 +1,167 @@
+// Tests of section 4: regions by areal coordinates, order, square-pattern parents.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace D = CGAL::Polygon_mesh_processing::internal::Denoising;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+
+TEST(SquarePattern, ParentRanksFollowThePaper)
+{
+  // node 1 hangs from face i (rank 0); 2..4 from 1; 5..9 from 4; 10..16 from 9
+  EXPECT_EQ(D::square_pattern_parent_rank(1), 0u);
+  for(unsigned k : {2u, 3u, 4u})
+    EXPECT_EQ(D::square_pattern_parent_rank(k), 1u) << k;
+  for(unsigned k = 5; k <= 9; ++k)
+    EXPECT_EQ(D::square_pattern_parent_rank(k), 4u) << k;
+  for(unsigned k = 10; k <= 16; ++k)
+    EXPECT_EQ(D::square_pattern_parent_rank(k), 9u) << k;
+  EXPECT_EQ(D::square_pattern_parent_rank(17), 16u);
+  // the paper's examples: 8 -> 4 -> 1 -> i and 16 -> 9 -> 4 -> 1 -> i
+  EXPECT_EQ(D::square_pattern_parent_rank(8), 4u);
+  EXPECT_EQ(D::square_pattern_parent_rank(16), 9u);
+  EXPECT_EQ(D::square_pattern_parent_rank(9), 4u);
+}
+
+TEST(SquarePattern, SixRegionsBySignsOfArealCoordinates)
+{
+  EXPECT_EQ(D::areal_region(0.2, 0.3, 0.5), -1); // inside
+  EXPECT_EQ(D::areal_region(0., 0.5, 0.5), -1);  // on an edge counts as inside
+  std::set<int> seen;
+  for(auto l : {std::array<double, 3>{-1, 1, 1}, {-1, -1, 3}, {1, -1, 1}, {3, -1, -1}, {1, 1, -1}, {-1, 3, -1}})
+  {
+    const int r = D::areal_region(l[0], l[1], l[2]);
+    EXPECT_GE(r, 0);
+    EXPECT_LT(r, 6);
+    seen.insert(r);
+  }
+  EXPECT_EQ(seen.size(), 6u);
+}
+
+// Face 0 is the triangle (0,0,0), (1,0,0), (0,1,0); faces 1.. are tiny
+// triangles around chosen centroids (the neighbourhood is given by hand).
+struct Hand_built
+{
+  D::Flat_mesh mesh;
+  D::Face_data faces;
+  D::Csr neighbors;
+
+  explicit Hand_built(const std::vector<D::Vec3>& centroids)
+  {
+    mesh.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh.triangles.push_back({0, 1, 2});
+    for(const D::Vec3& c : centroids)
+    {
+      const std::uint32_t b = std::uint32_t(mesh.points.size());
+      const double e = 1e-3;
+      mesh.points.push_back({c[0] - e, c[1] - e, c[2]});
+      mesh.points.push_back({c[0] + 2 * e, c[1] - e, c[2]});
+      mesh.points.push_back({c[0] - e, c[1] + 2 * e, c[2]});
+      mesh.triangles.push_back({b, b + 1, b + 2});
+    }
+    D::compute_face_data<CGAL::Sequential_tag>(mesh, mesh.points, faces);
+    neighbors.offsets.assign(mesh.number_of_faces() + 1, std::uint32_t(centroids.size()));
+    neighbors.offsets[0] = 0;
+    for(std::uint32_t j = 1; j <= centroids.size(); ++j)
+      neighbors.items.push_back(j);
+  }
+};
+
+TEST(SquarePattern, HandBuiltNeighbourhoodGivesRegionsOrderAndParents)
+{
+  // Region beyond the edge opposite vertex 0 (x + y > 1, x > 0, y > 0): six
+  // neighbours given out of order, at distances growing with their index in
+  // `order`. One neighbour lies inside face 0 (dropped), one above the plane
+  // (its projection falls in the same region) and one in another region.
+  const std::vector<D::Vec3> centroids = {
+      {0.9, 0.9, 0.},  // 1: region A, 3rd closest
+      {0.6, 0.6, 0.},  // 2: region A, closest
+      {0.2, 0.2, 0.},  // 3: inside face 0 -> dropped
+      {1.2, 1.2, 0.},  // 4: region A, 5th
+      {0.75, 0.75, 0.05}, // 5: region A after projection, 2nd
+      {1.05, 1.05, 0.}, // 6: region A, 4th
+      {1.4, 1.4, 0.},  // 7: region A, 6th
+      {-0.5, -0.5, 0.} // 8: beyond vertex 0 (another region)
+  };
+  Hand_built h(centroids);
+  const D::Path_forest forest = D::square_pattern_paths(h.mesh, h.faces, h.neighbors);
+  const std::uint32_t b = forest.offsets[0], e = forest.offsets[1];
+  ASSERT_EQ(e - b, 7u); // 8 neighbours, one dropped
+  // locate region A's run: the nodes whose face is one of {2,5,1,6,4,7}
+  std::vector<std::uint32_t> faces(forest.face.begin() + b, forest.face.begin() + e);
+  EXPECT_EQ(std::count(faces.begin(), faces.end(), 3u), 0); // the inside face is gone
+  auto pos = std::find(faces.begin(), faces.end(), 2u) - faces.begin();
+  ASSERT_LE(pos + 6, std::ptrdiff_t(faces.size()));
+  const std::vector<std::uint32_t> expected_order = {2, 5, 1, 6, 4, 7};
+  for(int k = 0; k < 6; ++k)
+    EXPECT_EQ(faces[pos + k], expected_order[k]) << "rank " << k + 1;
+  // parents in the region: 1 -> i, 2,3,4 -> 1, 5,6 -> 4
+  const std::vector<int> expected_parent_rank = {0, 1, 1, 1, 4, 4};
+  for(int k = 0; k < 6; ++k)
+  {
+    const std::int32_t p = forest.parent[b + pos + k];
+    if(expected_parent_rank[k] == 0)
+      EXPECT_EQ(p, D::Path_forest::root) << "rank " << k + 1;
+    else
+      EXPECT_EQ(p, std::int32_t(pos + expected_parent_rank[k] - 1)) << "rank " << k + 1;
+  }
+  // the lone neighbour of the other region hangs from face 0
+  auto other = std::find(faces.begin(), faces.end(), 8u) - faces.begin();
+  ASSERT_LT(other, std::ptrdiff_t(faces.size()));
+  EXPECT_EQ(forest.parent[b + other], D::Path_forest::root);
+}
+
+TEST(SquarePattern, DegenerateFaceFallsBackToDirectPaths)
+{
+  Hand_built h({{0.6, 0.6, 0.}, {0.9, 0.9, 0.}, {1.2, 1.2, 0.}});
+  h.mesh.points[2] = {2., 0., 0.}; // face 0 becomes a zero-area (collinear) triangle
+  D::compute_face_data<CGAL::Sequential_tag>(h.mesh, h.mesh.points, h.faces);
+  ASSERT_EQ(D::squared_norm(h.faces.normals[0]), 0.);
+  const D::Path_forest forest = D::square_pattern_paths(h.mesh, h.faces, h.neighbors);
+  ASSERT_EQ(forest.offsets[1] - forest.offsets[0], 3u);
+  for(std::uint32_t k = forest.offsets[0]; k < forest.offsets[1]; ++k)
+    EXPECT_EQ(forest.parent[k], D::Path_forest::root);
+}
+
+TEST(SquarePattern, FandiskForestIsWellFormed)
+{
+  Mesh mesh;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), mesh));
+  auto vim = get(CGAL::vertex_index, mesh);
+  auto fim = get(CGAL::face_index, mesh);
+  const D::Flat_mesh m = D::make_flat_mesh(mesh, get(CGAL::vertex_point, mesh), vim, fim, "test");
+  D::Face_data fd;
+  D::compute_face_data<CGAL::Sequential_tag>(m, m.points, fd);
+  const double d = D::mean_adjacent_centroid_distance(m, fd);
+  EXPECT_GT(d, 0.);
+  const D::Csr nb = D::geometric_neighborhoods<CGAL::Sequential_tag>(m, fd.centroids, 4 * d);
+  const D::Path_forest forest = D::square_pattern_paths(m, fd, nb);
+  std::size_t dropped = 0, total = 0;
+  for(std::size_t i = 0; i < m.number_of_faces(); ++i)
+  {
+    const std::uint32_t b = forest.offsets[i], e = forest.offsets[i + 1];
+    total += nb.end(i) - nb.begin(i);
+    dropped += (nb.end(i) - nb.begin(i)) - (e - b);
+    for(std::uint32_t k = b; k < e; ++k)
+    {
+      ASSERT_NE(forest.face[k], i);
+      ASSERT_LT(forest.parent[k], std::int32_t(k - b)); // parents come first
+      // every node is a neighbour within the radius
+      ASSERT_LE(D::norm(fd.centroids[forest.face[k]] - fd.centroids[i]), 4 * d * (1 + 1e-12));
+    }
+  }
+  // NOTES 6: well under one dropped neighbour per face; about 60 neighbours at 4d
+  EXPECT_LT(double(dropped) / m.number_of_faces(), 1.);
+  EXPECT_GT(double(total) / m.number_of_faces(), 30.);
+  EXPECT_LT(double(total) / m.number_of_faces(), 120.);
+}

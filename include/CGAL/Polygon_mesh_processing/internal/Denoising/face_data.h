@@ -29,7 +29,16 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Denoising {
 
-using Vec3 = std::array<double, 3>;
+// A 3D vector of doubles; an aggregate of the package's namespace, so that
+// its operators are found by argument-dependent lookup from anywhere.
+struct Vec3
+{
+  double c[3];
+  double& operator[](std::size_t i) { return c[i]; }
+  const double& operator[](std::size_t i) const { return c[i]; }
+  friend bool operator==(const Vec3& a, const Vec3& b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
+  friend bool operator!=(const Vec3& a, const Vec3& b) { return !(a == b); }
+};
 
 inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
