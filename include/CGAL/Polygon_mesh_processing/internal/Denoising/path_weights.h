@@ -74,23 +74,21 @@ inline void accumulate_path_sums(const Path_forest& forest, std::size_t i, const
     const Vec3& nk = normals[forest.face[k]];
     const std::int32_t p = forest.parent[k];
     const std::uint32_t local = k - b;
-    if(p == Path_forest::root)
+    const bool from_root = p == Path_forest::root;
+    const Vec3& np = from_root ? ni : normals[forest.face[b + p]];
+    double ds = kernel.power_term(squared_norm(nk - np), kernel.spatial_exponent);
+    double dr = kernel.power_term(squared_norm(nk - ni), kernel.range_exponent);
+    if(!forest.step.empty())
     {
-      const double d = kernel.power_term(squared_norm(nk - ni), kernel.spatial_exponent);
-      sums.spatial[local] = d;
-      sums.range[local] = kernel.power_term(squared_norm(nk - ni), kernel.range_exponent);
+      ds *= forest.step[k];
+      dr *= forest.step[k];
     }
-    else
-    {
-      const Vec3& np = normals[forest.face[b + p]];
-      sums.spatial[local] =
-          sums.spatial[p] + kernel.power_term(squared_norm(nk - np), kernel.spatial_exponent);
-      sums.range[local] = sums.range[p] + kernel.power_term(squared_norm(nk - ni), kernel.range_exponent);
-    }
+    sums.spatial[local] = (from_root ? 0. : sums.spatial[p]) + ds;
+    sums.range[local] = (from_root ? 0. : sums.range[p]) + dr;
   }
 }
 
-// One pass of eq. 8 on all faces: out[i] = normalised sum over the nodes j of
+// One pass of eq. 8 on all faces: out[i] = normalised sum over the weighted nodes j of
 // face i's tree of A_j g(d^s) g(d^r) n_j. A face whose weighted sum vanishes
 // (no neighbour, or weights that cancel) keeps its normal.
 template <typename ConcurrencyTag>
@@ -112,6 +110,8 @@ void intrinsic_filter_pass(const Path_forest& forest, const std::vector<Vec3>& n
       const std::uint32_t b = forest.offsets[i], e = forest.offsets[i + 1];
       for(std::uint32_t k = b; k < e; ++k)
       {
+        if(!forest.is_weighted(k))
+          continue;
         const std::uint32_t j = forest.face[k];
         const double w = areas[j] * kernel.weight(sums.spatial[k - b], sums.range[k - b]);
         sum = sum + w * normals[j];

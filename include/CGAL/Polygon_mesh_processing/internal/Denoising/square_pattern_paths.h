@@ -25,12 +25,23 @@ namespace Denoising {
 // parent is node `offsets[i] + parent[k]`, or face i itself when parent[k] is
 // `root`. A parent always comes before its children, so one forward sweep
 // over a face's nodes accumulates every path sum (eq. 9).
+//
+// Two optional per-node arrays (empty: the square pattern's case):
+// - `weighted[k] == 0` marks a node that only lies on paths (a face a
+//   geodesic crosses on its way to a neighbour) and gets no weight itself;
+// - `step[k]` is the step length ||q_k - q_parent|| of eq. 4, multiplying the
+//   node's terms of both sums (empty: step length 1, as in eq. 8-9).
 struct Path_forest
 {
   static constexpr std::int32_t root = -1;
   std::vector<std::uint32_t> offsets;
   std::vector<std::uint32_t> face;
   std::vector<std::int32_t> parent; // local to the face's node range
+  std::vector<char> weighted;       // empty: every node is weighted
+  std::vector<double> step;         // empty: every step length is 1
+
+  bool is_weighted(std::size_t k) const { return weighted.empty() || weighted[k] != 0; }
+  double step_length(std::size_t k) const { return step.empty() ? 1. : step[k]; }
 
   std::size_t number_of_faces() const { return offsets.empty() ? 0 : offsets.size() - 1; }
   std::size_t max_nodes_per_face() const
