@@ -49,25 +49,6 @@ public:
   }
 };
 
-// Area-weighted unit vertex normals (sum of the incident faces' cross
-// products); zero for a vertex with no incident face of non-zero area.
-inline std::vector<Vec3> area_weighted_vertex_normals(const Flat_mesh& m)
-{
-  std::vector<Vec3> n(m.number_of_vertices(), Vec3{0., 0., 0.});
-  for(const auto& t : m.triangles)
-  {
-    const Vec3 c = cross(m.points[t[1]] - m.points[t[0]], m.points[t[2]] - m.points[t[0]]);
-    for(std::uint32_t v : t)
-      n[v] = n[v] + c;
-  }
-  for(Vec3& v : n)
-  {
-    const double len = norm(v);
-    v = len > 0. ? (1. / len) * v : Vec3{0., 0., 0.};
-  }
-  return n;
-}
-
 template <typename TriangleMesh, typename NamedParameters>
 void add_noise_along_normals(TriangleMesh& tmesh, double relative_sigma, double fraction,
                              const NamedParameters& np, const char* fname)

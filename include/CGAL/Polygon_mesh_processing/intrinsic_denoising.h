@@ -8,10 +8,7 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/path_weights.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/square_pattern_paths.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
 
 #include <CGAL/tags.h>
@@ -20,76 +17,6 @@
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
-namespace internal {
-namespace Denoising {
-
-// Default parameter values of the intrinsic denoiser (see the documentation of
-// intrinsic_denoising() for how they were chosen).
-struct Intrinsic_defaults
-{
-  static constexpr unsigned int iterations = 30;
-  static constexpr unsigned int vertex_iterations = 2;
-  static constexpr double relative_radius = 4.;
-  static constexpr double sigma_spatial = 0.4;
-  static constexpr double sigma_range = 0.4;
-};
-
-// What stays fixed across the iterations of Algorithm 1: the flat mesh,
-// neighbourhoods and paths (built on the mesh as given), and the kernel.
-struct Intrinsic_setup
-{
-  Flat_mesh mesh;
-  Face_data input_faces;
-  double radius = 0.;
-  Csr neighbors;
-  Path_forest paths;
-  Intrinsic_kernel kernel;
-};
-
-template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters, typename Maps>
-Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParameters& np, const Maps& maps,
-                                     const char* fname)
-{
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  Intrinsic_setup s;
-  s.kernel.sigma_spatial =
-      choose_parameter(get_parameter(np, internal_np::sigma_spatial), Intrinsic_defaults::sigma_spatial);
-  s.kernel.sigma_range = choose_parameter(get_parameter(np, internal_np::sigma_range), Intrinsic_defaults::sigma_range);
-  s.kernel.spatial_exponent = choose_parameter(get_parameter(np, internal_np::spatial_exponent), 1.);
-  s.kernel.range_exponent = choose_parameter(get_parameter(np, internal_np::range_exponent), 1.);
-  s.kernel.include_self = choose_parameter(get_parameter(np, internal_np::include_self_weight), false);
-  require_positive(s.kernel.sigma_spatial, fname, "sigma_spatial");
-  require_positive(s.kernel.sigma_range, fname, "sigma_range");
-  require_positive(s.kernel.spatial_exponent, fname, "spatial_exponent");
-  require_positive(s.kernel.range_exponent, fname, "range_exponent");
-  const double absolute_radius = choose_parameter(get_parameter(np, internal_np::neighbor_radius), -1.);
-  const double relative_radius =
-      choose_parameter(get_parameter(np, internal_np::relative_neighbor_radius), Intrinsic_defaults::relative_radius);
-  if(absolute_radius != -1.)
-    require_positive(absolute_radius, fname, "neighbor_radius");
-  else
-    require_positive(relative_radius, fname, "relative_neighbor_radius");
-  const Intrinsic_path_strategy strategy =
-      choose_parameter(get_parameter(np, internal_np::path_strategy), Intrinsic_path_strategy::SQUARE_PATTERN);
-
-  s.mesh = maps.flat(tmesh, fname);
-  compute_face_data<ConcurrencyTag>(s.mesh, s.mesh.points, s.input_faces);
-  s.radius = absolute_radius != -1.
-                 ? absolute_radius
-                 : relative_radius * mean_adjacent_centroid_distance(s.mesh, s.input_faces);
-  s.neighbors = geometric_neighborhoods<ConcurrencyTag>(s.mesh, s.input_faces.centroids, s.radius);
-  switch(strategy)
-  {
-  case Intrinsic_path_strategy::DIRECT: s.paths = direct_paths(s.neighbors); break;
-  case Intrinsic_path_strategy::SQUARE_PATTERN:
-  default: s.paths = square_pattern_paths(s.mesh, s.input_faces, s.neighbors); break;
-  }
-  return s;
-}
-
-} // namespace Denoising
-} // namespace internal
 
 
 /*!
@@ -151,6 +78,11 @@ Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParam
       \cgalParamDescription{how paths are chosen}
       \cgalParamType{`CGAL::Polygon_mesh_processing::Intrinsic_path_strategy`}
       \cgalParamDefault{`Intrinsic_path_strategy::SQUARE_PATTERN`}
+    \cgalParamNEnd
+    \cgalParamNBegin{use_step_length}
+      \cgalParamDescription{if `true`, each term of the path sums is multiplied by the step length \f$\|q_{x+1} - q_x\|\f$ between the centroids of consecutive path faces (eq. 4); eq. 8-9 set it to 1}
+      \cgalParamType{bool}
+      \cgalParamDefault{`false`}
     \cgalParamNEnd
     \cgalParamNBegin{include_self_weight}
       \cgalParamDescription{if `true`, \f$A_i n_i\f$ is added to the sum; eq. 8 read literally leaves it out}
@@ -240,7 +172,7 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
       \cgalParamType{unsigned int}
       \cgalParamDefault{`2`}
     \cgalParamNEnd
-    \cgalParamNBegin{sigma_spatial, sigma_range, spatial_exponent, range_exponent, neighbor_radius, relative_neighbor_radius, path_strategy, include_self_weight}
+    \cgalParamNBegin{sigma_spatial, sigma_range, spatial_exponent, range_exponent, neighbor_radius, relative_neighbor_radius, path_strategy, use_step_length, include_self_weight}
       \cgalParamDescription{as for `intrinsic_filter_face_normals()`}
     \cgalParamNEnd
     \cgalParamNBegin{face_normal_map}

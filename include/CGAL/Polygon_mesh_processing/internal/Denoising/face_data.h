@@ -174,6 +174,36 @@ void compute_face_data(const Flat_mesh& m, const std::vector<Vec3>& points, Face
   });
 }
 
+// Area-weighted unit vertex normals (sum of the incident faces' cross
+// products); zero for a vertex with no incident face of non-zero area.
+inline std::vector<Vec3> area_weighted_vertex_normals(const Flat_mesh& m)
+{
+  std::vector<Vec3> n(m.number_of_vertices(), Vec3{0., 0., 0.});
+  for(const auto& t : m.triangles)
+  {
+    const Vec3 c = cross(m.points[t[1]] - m.points[t[0]], m.points[t[2]] - m.points[t[0]]);
+    for(std::uint32_t v : t)
+      n[v] = n[v] + c;
+  }
+  for(Vec3& v : n)
+  {
+    const double len = norm(v);
+    v = len > 0. ? (1. / len) * v : Vec3{0., 0., 0.};
+  }
+  return n;
+}
+
+// One third of the area of the faces around each vertex (its share of the
+// surface: the measure of a vertex signal).
+inline std::vector<double> vertex_areas(const Flat_mesh& m, const std::vector<double>& face_areas)
+{
+  std::vector<double> a(m.number_of_vertices(), 0.);
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+    for(std::uint32_t v : m.triangles[f])
+      a[v] += face_areas[f] / 3.;
+  return a;
+}
+
 // Mean distance between the centroids of edge-adjacent faces: the paper's d.
 // Returns 0 if no two faces share an edge.
 inline double mean_adjacent_centroid_distance(const Flat_mesh& m, const Face_data& fd)

@@ -30,7 +30,27 @@ enum class Intrinsic_path_strategy {
   SQUARE_PATTERN,
   /// The path is `{i, j}` (no intermediate face): with it the intrinsic filter
   /// degenerates to a bilateral normal filter on the same neighbourhood.
-  DIRECT
+  DIRECT,
+  /// Shortest paths in the adjacency graph inside the neighbourhood (faces
+  /// through shared vertices, from centroid to centroid; vertices through
+  /// edges), by Dijkstra: a cheap approximation of geodesic paths, and the
+  /// paths of the geodesic and propagation filter presets.
+  SHORTEST_GRAPH_PATH
+};
+
+/// \ingroup PMP_denoising_grp
+/// Built-in signals for \f$\varphi\f$ (in \f$d^s\f$) and \f$\psi\f$ (in
+/// \f$d^r\f$) of the general intrinsic filter; a property map can be given
+/// instead.
+enum class Intrinsic_signal {
+  /// the signal being filtered
+  INPUT,
+  /// the position: face centroid, or vertex point
+  POSITION,
+  /// the unit normal: of the face, or the area-weighted normal of the vertex
+  NORMAL,
+  /// a constant: its term of the weight is 1 (as \f$d^r = 1\f$ in eq. 6)
+  CONSTANT
 };
 
 } // namespace Polygon_mesh_processing

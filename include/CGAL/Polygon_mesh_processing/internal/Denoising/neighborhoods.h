@@ -1,9 +1,10 @@
 // Copyright (c) 2026 The intrinsic denoising package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Geometric neighbourhoods of faces (as in Zhang et al. 2015, used by eq. 8):
-// the faces connected to face i through shared vertices whose centroid lies
-// within a radius of c_i, grown by breadth-first search. Stored in CSR form.
+// Geometric neighbourhoods (as in Zhang et al. 2015, used by eq. 8): the faces
+// connected to face i through shared vertices whose centroid lies within a
+// radius of c_i, grown by breadth-first search; likewise for vertices through
+// edges. Stored in CSR form.
 
 #ifndef CGAL_PMP_INTERNAL_DENOISING_NEIGHBORHOODS_H
 #define CGAL_PMP_INTERNAL_DENOISING_NEIGHBORHOODS_H
@@ -31,56 +32,103 @@ struct Csr
   std::uint32_t end(std::size_t f) const { return offsets[f + 1]; }
 };
 
-// Neighbours of every face (face i itself excluded), in breadth-first order.
-// A face enters the neighbourhood, and the search goes on through it, if its
-// centroid lies within `radius` of c_i and it shares a vertex with a face
-// already reached.
-template <typename ConcurrencyTag>
-Csr geometric_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>& centroids, double radius)
+// Calls f(g) for every face g sharing a vertex with face f (f itself included).
+struct Face_vertex_adjacency
 {
-  const std::size_t nf = m.number_of_faces();
+  const Flat_mesh& m;
+  template <typename F>
+  void operator()(std::uint32_t f, const F& fn) const
+  {
+    for(std::uint32_t v : m.triangles[f])
+      for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
+        fn(m.vertex_faces[k]);
+  }
+};
+
+// Calls f(w) for every vertex w joined to v by an edge.
+struct Vertex_edge_adjacency
+{
+  const Csr& adjacency;
+  template <typename F>
+  void operator()(std::uint32_t v, const F& fn) const
+  {
+    for(std::uint32_t k = adjacency.begin(v); k < adjacency.end(v); ++k)
+      fn(adjacency.items[k]);
+  }
+};
+
+// The vertices joined to each vertex by an edge, in increasing order.
+inline Csr vertex_adjacency(const Flat_mesh& m)
+{
+  const std::size_t nv = m.number_of_vertices();
+  std::vector<std::vector<std::uint32_t>> lists(nv);
+  for(const auto& t : m.triangles)
+    for(int k = 0; k < 3; ++k)
+    {
+      lists[t[k]].push_back(t[(k + 1) % 3]);
+      lists[t[(k + 1) % 3]].push_back(t[k]);
+    }
+  Csr csr;
+  csr.offsets.assign(nv + 1, 0);
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    auto& l = lists[v];
+    std::sort(l.begin(), l.end());
+    l.erase(std::unique(l.begin(), l.end()), l.end());
+    csr.offsets[v + 1] = csr.offsets[v] + std::uint32_t(l.size());
+  }
+  csr.items.reserve(csr.offsets[nv]);
+  for(const auto& l : lists)
+    csr.items.insert(csr.items.end(), l.begin(), l.end());
+  return csr;
+}
+
+// Neighbours of every item (item i itself excluded), in breadth-first order:
+// an item enters the neighbourhood of i, and the search goes on through it, if
+// its position lies within `radius` of the position of i and it is adjacent
+// to an item already reached. For faces (positions: centroids; adjacency:
+// shared vertices) this is the geometric neighbourhood of eq. 8.
+template <typename ConcurrencyTag, typename Adjacency>
+Csr geometric_neighborhoods(const std::vector<Vec3>& positions, const Adjacency& adjacent, double radius)
+{
+  const std::size_t n = positions.size();
   const double r2 = radius * radius;
   // Pass 1 fills one list per chunk, pass 2 concatenates them.
-  std::vector<std::uint32_t> counts(nf, 0);
+  std::vector<std::uint32_t> counts(n, 0);
   struct Chunk
   {
     std::size_t first;
     std::vector<std::uint32_t> items;
   };
-  std::vector<Chunk> chunks;
   // few chunks: each one allocates a visit stamp array of the mesh's size
-  const std::size_t chunk_size = (std::max)(std::size_t(4096), nf / 32 + 1);
-  const std::size_t nchunks = (nf + chunk_size - 1) / chunk_size;
-  chunks.resize(nchunks);
+  const std::size_t chunk_size = (std::max)(std::size_t(4096), n / 32 + 1);
+  const std::size_t nchunks = (n + chunk_size - 1) / chunk_size;
+  std::vector<Chunk> chunks(nchunks);
   for_each_chunk<ConcurrencyTag>(
       nchunks,
       [&](std::size_t cb, std::size_t ce) {
-        std::vector<std::uint32_t> stamp(nf, std::uint32_t(-1));
+        std::vector<std::uint32_t> stamp(n, std::uint32_t(-1));
         std::vector<std::uint32_t> queue;
         for(std::size_t c = cb; c < ce; ++c)
         {
           Chunk& chunk = chunks[c];
           chunk.first = c * chunk_size;
-          const std::size_t last = (std::min)(nf, chunk.first + chunk_size);
+          const std::size_t last = (std::min)(n, chunk.first + chunk_size);
           for(std::size_t i = chunk.first; i < last; ++i)
           {
-            const Vec3& ci = centroids[i];
+            const Vec3& pi = positions[i];
+            const std::uint32_t mark = std::uint32_t(i);
             queue.clear();
-            queue.push_back(std::uint32_t(i));
-            stamp[i] = std::uint32_t(i);
+            queue.push_back(mark);
+            stamp[i] = mark;
             for(std::size_t q = 0; q < queue.size(); ++q)
-            {
-              for(std::uint32_t v : m.triangles[queue[q]])
-                for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
-                {
-                  const std::uint32_t g = m.vertex_faces[k];
-                  if(stamp[g] == std::uint32_t(i))
-                    continue;
-                  stamp[g] = std::uint32_t(i);
-                  if(squared_norm(centroids[g] - ci) <= r2)
-                    queue.push_back(g);
-                }
-            }
+              adjacent(queue[q], [&](std::uint32_t g) {
+                if(stamp[g] == mark)
+                  return;
+                stamp[g] = mark;
+                if(squared_norm(positions[g] - pi) <= r2)
+                  queue.push_back(g);
+              });
             counts[i] = std::uint32_t(queue.size() - 1);
             chunk.items.insert(chunk.items.end(), queue.begin() + 1, queue.end());
           }
@@ -88,13 +136,20 @@ Csr geometric_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>& centroi
       },
       1);
   Csr csr;
-  csr.offsets.assign(nf + 1, 0);
-  for(std::size_t f = 0; f < nf; ++f)
+  csr.offsets.assign(n + 1, 0);
+  for(std::size_t f = 0; f < n; ++f)
     csr.offsets[f + 1] = csr.offsets[f] + counts[f];
-  csr.items.reserve(csr.offsets[nf]);
+  csr.items.reserve(csr.offsets[n]);
   for(const Chunk& c : chunks)
     csr.items.insert(csr.items.end(), c.items.begin(), c.items.end());
   return csr;
+}
+
+// The geometric neighbourhoods of faces.
+template <typename ConcurrencyTag>
+Csr geometric_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>& centroids, double radius)
+{
+  return geometric_neighborhoods<ConcurrencyTag>(centroids, Face_vertex_adjacency{m}, radius);
 }
 
 } // namespace Denoising

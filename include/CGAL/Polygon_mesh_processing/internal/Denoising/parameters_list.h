@@ -22,3 +22,10 @@ CGAL_add_named_parameter(relative_neighbor_radius_t, relative_neighbor_radius, r
 CGAL_add_named_parameter(include_self_weight_t, include_self_weight, include_self_weight)
 // how the path from face i to neighbour j is chosen (Intrinsic_path_strategy)
 CGAL_add_named_parameter(path_strategy_t, path_strategy, path_strategy)
+// eq. 4's step length ||q_{x+1} - q_x|| in the path sums (off: eq. 8-9)
+CGAL_add_named_parameter(use_step_length_t, use_step_length, use_step_length)
+// the signals phi (for d^s) and psi (for d^r) of the general filter, section 3.1
+CGAL_add_named_parameter(spatial_signal_t, spatial_signal, spatial_signal)
+CGAL_add_named_parameter(range_signal_t, range_signal, range_signal)
+// whether the general filter scales each result to unit length (normals)
+CGAL_add_named_parameter(unit_length_result_t, unit_length_result, unit_length_result)

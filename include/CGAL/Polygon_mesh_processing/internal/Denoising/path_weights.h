@@ -1,14 +1,15 @@
 // Copyright (c) 2026 The intrinsic denoising package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Eqs. 8-9: one pass of the intrinsic filter on face normals. The sums of
-// eq. 9 are accumulated from parent to child along each face's path tree, so
-// one sweep over a neighbourhood gives every weight.
+// Eqs. 2-4 and 8-9: the weights of the intrinsic filter along path trees, for
+// any signal, and the pass on face normals built on them. The path sums are
+// accumulated from parent to child along each item's path tree, so one sweep
+// over a neighbourhood gives every weight.
 
 #ifndef CGAL_PMP_INTERNAL_DENOISING_PATH_WEIGHTS_H
 #define CGAL_PMP_INTERNAL_DENOISING_PATH_WEIGHTS_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/square_pattern_paths.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/path_forest.h>
 
 #include <cmath>
 #include <vector>
@@ -53,73 +54,79 @@ struct Intrinsic_kernel
   }
 };
 
-// Per-face scratch for the path sums, sized for the largest neighbourhood.
-struct Path_sums
+// The engine of the generalized intrinsic filter (section 3.1): for every
+// item i, the kernel weight g(d^s; sigma_s) g(d^r; sigma_r) of each node of
+// its path tree, the path sums of eq. 4 / eq. 9 being accumulated from parent
+// to child in one forward sweep:
+//   S^s(k) = S^s(parent) + ||phi_k - phi_parent||^n (x step length)
+//   S^r(k) = S^r(parent) + ||psi_k - psi_i||^m      (x step length)
+// with S(i) = 0, d^s = S^s^(1/n), d^r = S^r^(1/m). `spatial_sq(a, b)` returns
+// ||phi_a - phi_b||^2 and `range_sq(a, b)` ||psi_a - psi_b||^2. Then
+// `average(i, b, e, w)` receives the weights w[k - b] of the nodes k in
+// [b, e) of item i's tree (path-only nodes included; they are the caller's
+// to skip) and makes the filtered value of i.
+template <typename ConcurrencyTag, typename SpatialSq, typename RangeSq, typename Average>
+void intrinsic_weights_pass(const Path_forest& forest, const Intrinsic_kernel& kernel, const SpatialSq& spatial_sq,
+                            const RangeSq& range_sq, const Average& average)
 {
-  std::vector<double> spatial, range;
-  explicit Path_sums(std::size_t n) : spatial(n), range(n) {}
-};
-
-// Path sums of eq. 9 for every node of face i's tree: after the call,
-// sums.spatial[k] = sum over consecutive path nodes of ||n_{x+1} - n_x||^n and
-// sums.range[k] = sum over path nodes of ||n_x - n_i||^m, for the path from i
-// to node k (face i's own term of the range sum is 0).
-inline void accumulate_path_sums(const Path_forest& forest, std::size_t i, const std::vector<Vec3>& normals,
-                                 const Intrinsic_kernel& kernel, Path_sums& sums)
-{
-  const std::uint32_t b = forest.offsets[i], e = forest.offsets[i + 1];
-  const Vec3& ni = normals[i];
-  for(std::uint32_t k = b; k < e; ++k)
-  {
-    const Vec3& nk = normals[forest.face[k]];
-    const std::int32_t p = forest.parent[k];
-    const std::uint32_t local = k - b;
-    const bool from_root = p == Path_forest::root;
-    const Vec3& np = from_root ? ni : normals[forest.face[b + p]];
-    double ds = kernel.power_term(squared_norm(nk - np), kernel.spatial_exponent);
-    double dr = kernel.power_term(squared_norm(nk - ni), kernel.range_exponent);
-    if(!forest.step.empty())
+  const std::size_t n = forest.number_of_faces();
+  const std::size_t max_nodes = forest.max_nodes_per_face();
+  const bool with_steps = !forest.step.empty();
+  for_each_chunk<ConcurrencyTag>(n, [&](std::size_t ib, std::size_t ie) {
+    std::vector<double> spatial(max_nodes), range(max_nodes), weight(max_nodes);
+    for(std::size_t i = ib; i < ie; ++i)
     {
-      ds *= forest.step[k];
-      dr *= forest.step[k];
+      const std::uint32_t b = forest.offsets[i], e = forest.offsets[i + 1];
+      for(std::uint32_t k = b; k < e; ++k)
+      {
+        const std::uint32_t j = forest.face[k];
+        const std::int32_t p = forest.parent[k];
+        const bool from_root = p == Path_forest::root;
+        const std::uint32_t from = from_root ? std::uint32_t(i) : forest.face[b + p];
+        double ds = kernel.power_term(spatial_sq(j, from), kernel.spatial_exponent);
+        double dr = kernel.power_term(range_sq(j, std::uint32_t(i)), kernel.range_exponent);
+        if(with_steps)
+        {
+          ds *= forest.step[k];
+          dr *= forest.step[k];
+        }
+        const std::uint32_t local = k - b;
+        spatial[local] = (from_root ? 0. : spatial[p]) + ds;
+        range[local] = (from_root ? 0. : range[p]) + dr;
+        weight[local] = kernel.weight(spatial[local], range[local]);
+      }
+      average(i, b, e, weight.data());
     }
-    sums.spatial[local] = (from_root ? 0. : sums.spatial[p]) + ds;
-    sums.range[local] = (from_root ? 0. : sums.range[p]) + dr;
-  }
+  });
 }
 
-// One pass of eq. 8 on all faces: out[i] = normalised sum over the weighted nodes j of
-// face i's tree of A_j g(d^s) g(d^r) n_j. A face whose weighted sum vanishes
-// (no neighbour, or weights that cancel) keeps its normal.
+// One pass of eq. 8 on face normals: the engine with phi = psi = J = n and the
+// face areas as measure. out[i] = normalised sum over the weighted nodes j of
+// face i's tree of A_j g(d^s) g(d^r) n_j (plus A_i n_i with the self term). A
+// face whose weighted sum vanishes (no neighbour, or weights that cancel)
+// keeps its normal.
 template <typename ConcurrencyTag>
 void intrinsic_filter_pass(const Path_forest& forest, const std::vector<Vec3>& normals,
                            const std::vector<double>& areas, const Intrinsic_kernel& kernel,
                            std::vector<Vec3>& out)
 {
-  const std::size_t nf = forest.number_of_faces();
-  out.resize(nf);
-  const std::size_t max_nodes = forest.max_nodes_per_face();
-  for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t fb, std::size_t fe) {
-    Path_sums sums(max_nodes);
-    for(std::size_t i = fb; i < fe; ++i)
-    {
-      accumulate_path_sums(forest, i, normals, kernel, sums);
-      Vec3 sum = {0., 0., 0.};
-      if(kernel.include_self)
-        sum = areas[i] * normals[i];
-      const std::uint32_t b = forest.offsets[i], e = forest.offsets[i + 1];
-      for(std::uint32_t k = b; k < e; ++k)
-      {
-        if(!forest.is_weighted(k))
-          continue;
-        const std::uint32_t j = forest.face[k];
-        const double w = areas[j] * kernel.weight(sums.spatial[k - b], sums.range[k - b]);
-        sum = sum + w * normals[j];
-      }
-      const double len = norm(sum);
-      out[i] = (len > 0. && std::isfinite(len)) ? (1. / len) * sum : normals[i];
-    }
-  });
+  out.resize(forest.number_of_faces());
+  const auto normal_sq = [&normals](std::uint32_t a, std::uint32_t b) { return squared_norm(normals[a] - normals[b]); };
+  intrinsic_weights_pass<ConcurrencyTag>(
+      forest, kernel, normal_sq, normal_sq,
+      [&](std::size_t i, std::uint32_t b, std::uint32_t e, const double* w) {
+        Vec3 sum = {0., 0., 0.};
+        if(kernel.include_self)
+          sum = areas[i] * normals[i];
+        for(std::uint32_t k = b; k < e; ++k)
+          if(forest.is_weighted(k))
+          {
+            const std::uint32_t j = forest.face[k];
+            sum = sum + (areas[j] * w[k - b]) * normals[j];
+          }
+        const double len = norm(sum);
+        out[i] = (len > 0. && std::isfinite(len)) ? (1. / len) * sum : normals[i];
+      });
 }
 
 } // namespace Denoising

@@ -8,6 +8,7 @@
 #define CGAL_PMP_INTERNAL_DENOISING_SQUARE_PATTERN_PATHS_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/path_forest.h>
 
 #include <algorithm>
 #include <array>
@@ -19,39 +20,6 @@ namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
 namespace Denoising {
-
-// The paths of every face, as trees rooted at the face. The nodes of face i
-// are nodes offsets[i] .. offsets[i+1]-1; node k is face `face[k]` and its
-// parent is node `offsets[i] + parent[k]`, or face i itself when parent[k] is
-// `root`. A parent always comes before its children, so one forward sweep
-// over a face's nodes accumulates every path sum (eq. 9).
-//
-// Two optional per-node arrays (empty: the square pattern's case):
-// - `weighted[k] == 0` marks a node that only lies on paths (a face a
-//   geodesic crosses on its way to a neighbour) and gets no weight itself;
-// - `step[k]` is the step length ||q_k - q_parent|| of eq. 4, multiplying the
-//   node's terms of both sums (empty: step length 1, as in eq. 8-9).
-struct Path_forest
-{
-  static constexpr std::int32_t root = -1;
-  std::vector<std::uint32_t> offsets;
-  std::vector<std::uint32_t> face;
-  std::vector<std::int32_t> parent; // local to the face's node range
-  std::vector<char> weighted;       // empty: every node is weighted
-  std::vector<double> step;         // empty: every step length is 1
-
-  bool is_weighted(std::size_t k) const { return weighted.empty() || weighted[k] != 0; }
-  double step_length(std::size_t k) const { return step.empty() ? 1. : step[k]; }
-
-  std::size_t number_of_faces() const { return offsets.empty() ? 0 : offsets.size() - 1; }
-  std::size_t max_nodes_per_face() const
-  {
-    std::size_t mx = 0;
-    for(std::size_t f = 0; f + 1 < offsets.size(); ++f)
-      mx = (std::max)(mx, std::size_t(offsets[f + 1] - offsets[f]));
-    return mx;
-  }
-};
 
 // Square pattern: parent of rank k (k = 1, 2, ...) in a region is the rank
 // (ceil(sqrt(k)) - 1)^2, rank 0 standing for face i: 1 -> i, 2..4 -> 1,
@@ -156,16 +124,6 @@ inline Path_forest square_pattern_paths(const Flat_mesh& m, const Face_data& fd,
     }
     forest.offsets[i + 1] = std::uint32_t(forest.face.size());
   }
-  return forest;
-}
-
-// Direct paths L = {i, j}: every neighbour hangs from face i.
-inline Path_forest direct_paths(const Csr& neighbors)
-{
-  Path_forest forest;
-  forest.offsets = neighbors.offsets;
-  forest.face = neighbors.items;
-  forest.parent.assign(neighbors.items.size(), Path_forest::root);
   return forest;
 }
 

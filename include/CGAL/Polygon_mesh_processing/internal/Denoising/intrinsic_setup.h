@@ -1,0 +1,168 @@
+// Copyright (c) 2026 The intrinsic denoising package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// What the intrinsic filters read from their named parameters (kernel,
+// radius, path strategy) and the construction of their paths: shared by the
+// face-normal denoiser and the general filter of section 3.1.
+
+#ifndef CGAL_PMP_INTERNAL_DENOISING_INTRINSIC_SETUP_H
+#define CGAL_PMP_INTERNAL_DENOISING_INTRINSIC_SETUP_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/graph_paths.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/path_forest.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/path_weights.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/square_pattern_paths.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Denoising {
+
+// Default parameter values of the intrinsic filters (see the documentation of
+// intrinsic_denoising() for how they were chosen).
+struct Intrinsic_defaults
+{
+  static constexpr unsigned int iterations = 30;
+  static constexpr unsigned int vertex_iterations = 2;
+  static constexpr double relative_radius = 4.;
+  static constexpr double sigma_spatial = 0.4;
+  static constexpr double sigma_range = 0.4;
+};
+
+// sigma_s, sigma_r, n, m and the self term, checked.
+template <typename NamedParameters>
+Intrinsic_kernel read_kernel(const NamedParameters& np, const char* fname, bool default_self = false)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Intrinsic_kernel k;
+  k.sigma_spatial = choose_parameter(get_parameter(np, internal_np::sigma_spatial), Intrinsic_defaults::sigma_spatial);
+  k.sigma_range = choose_parameter(get_parameter(np, internal_np::sigma_range), Intrinsic_defaults::sigma_range);
+  k.spatial_exponent = choose_parameter(get_parameter(np, internal_np::spatial_exponent), 1.);
+  k.range_exponent = choose_parameter(get_parameter(np, internal_np::range_exponent), 1.);
+  k.include_self = choose_parameter(get_parameter(np, internal_np::include_self_weight), default_self);
+  require_positive(k.sigma_spatial, fname, "sigma_spatial");
+  require_positive(k.sigma_range, fname, "sigma_range");
+  require_positive(k.spatial_exponent, fname, "spatial_exponent");
+  require_positive(k.range_exponent, fname, "range_exponent");
+  return k;
+}
+
+// The neighbourhood radius: neighbor_radius if given, else
+// relative_neighbor_radius times `unit` (the mean distance between adjacent
+// items' positions).
+template <typename NamedParameters>
+double read_radius(const NamedParameters& np, const char* fname, double unit)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const double absolute = choose_parameter(get_parameter(np, internal_np::neighbor_radius), -1.);
+  if(absolute != -1.)
+  {
+    require_positive(absolute, fname, "neighbor_radius");
+    return absolute;
+  }
+  const double relative =
+      choose_parameter(get_parameter(np, internal_np::relative_neighbor_radius), Intrinsic_defaults::relative_radius);
+  require_positive(relative, fname, "relative_neighbor_radius");
+  return relative * unit;
+}
+
+// Mean distance between the positions of adjacent items (each pair once).
+template <typename Adjacency>
+double mean_adjacent_distance(const std::vector<Vec3>& positions, const Adjacency& adjacent)
+{
+  double sum = 0.;
+  std::size_t count = 0;
+  for(std::uint32_t a = 0; a < positions.size(); ++a)
+    adjacent(a, [&](std::uint32_t b) {
+      if(b > a)
+      {
+        sum += norm(positions[b] - positions[a]);
+        ++count;
+      }
+    });
+  return count == 0 ? 0. : sum / double(count);
+}
+
+// The paths of `strategy` in the neighbourhoods `neighbors` of items at
+// `positions`. The square pattern needs the items to be the faces of `faces`
+// (with their data `fd`); it is refused for other items. With
+// `use_step_length`, the step lengths of eq. 4 are set from the positions.
+template <typename Adjacency>
+Path_forest make_paths(Intrinsic_path_strategy strategy, bool use_step_length, const std::vector<Vec3>& positions,
+                       const Adjacency& adjacent, const Csr& neighbors, const Flat_mesh* faces, const Face_data* fd,
+                       const char* fname)
+{
+  Path_forest paths;
+  switch(strategy)
+  {
+  case Intrinsic_path_strategy::DIRECT: paths = direct_paths(neighbors); break;
+  case Intrinsic_path_strategy::SHORTEST_GRAPH_PATH: paths = shortest_graph_paths(positions, adjacent, neighbors); break;
+  case Intrinsic_path_strategy::SQUARE_PATTERN:
+    if(faces == nullptr || fd == nullptr)
+      throw std::invalid_argument(std::string(fname) +
+                                  ": square-pattern paths are defined for face signals only; use DIRECT or "
+                                  "SHORTEST_GRAPH_PATH for vertex signals.");
+    paths = square_pattern_paths(*faces, *fd, neighbors);
+    break;
+  default: throw std::invalid_argument(std::string(fname) + ": unknown path strategy.");
+  }
+  if(use_step_length)
+    set_step_lengths(paths, positions);
+  return paths;
+}
+
+template <typename NamedParameters>
+Intrinsic_path_strategy read_strategy(const NamedParameters& np, Intrinsic_path_strategy default_strategy)
+{
+  return parameters::choose_parameter(parameters::get_parameter(np, internal_np::path_strategy), default_strategy);
+}
+
+template <typename NamedParameters>
+bool read_step_length(const NamedParameters& np)
+{
+  return parameters::choose_parameter(parameters::get_parameter(np, internal_np::use_step_length), false);
+}
+
+// What stays fixed across the iterations of Algorithm 1: the flat mesh,
+// neighbourhoods and paths (built on the mesh as given), and the kernel.
+struct Intrinsic_setup
+{
+  Flat_mesh mesh;
+  Face_data input_faces;
+  double radius = 0.;
+  Csr neighbors;
+  Path_forest paths;
+  Intrinsic_kernel kernel;
+};
+
+template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters, typename Maps>
+Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParameters& np, const Maps& maps,
+                                     const char* fname)
+{
+  Intrinsic_setup s;
+  s.kernel = read_kernel(np, fname);
+  const Intrinsic_path_strategy strategy = read_strategy(np, Intrinsic_path_strategy::SQUARE_PATTERN);
+  const bool step_length = read_step_length(np);
+  s.mesh = maps.flat(tmesh, fname);
+  compute_face_data<ConcurrencyTag>(s.mesh, s.mesh.points, s.input_faces);
+  s.radius = read_radius(np, fname, mean_adjacent_centroid_distance(s.mesh, s.input_faces));
+  s.neighbors = geometric_neighborhoods<ConcurrencyTag>(s.mesh, s.input_faces.centroids, s.radius);
+  s.paths = make_paths(strategy, step_length, s.input_faces.centroids, Face_vertex_adjacency{s.mesh}, s.neighbors,
+                       &s.mesh, &s.input_faces, fname);
+  return s;
+}
+
+} // namespace Denoising
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif
