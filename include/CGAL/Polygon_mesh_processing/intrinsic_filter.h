@@ -337,7 +337,7 @@ void intrinsic_filter(const TriangleMesh& tmesh, const SignalMap& signal, Filter
                  double unit) {
     const double radius = D::read_radius(np, fname, unit);
     const D::Csr neighbors = D::geometric_neighborhoods<ConcurrencyTag>(positions, adjacency, radius);
-    const D::Path_forest paths = D::make_paths(strategy, step_length, positions, adjacency, neighbors,
+    const D::Path_forest paths = D::make_paths<ConcurrencyTag>(strategy, step_length, positions, adjacency, neighbors,
                                                on_faces ? &m : nullptr, on_faces ? &fd : nullptr, fname);
     D::Flat_signal current = D::read_signal(keys, count, index, signal, fname, "signal"), next, phi_store, psi_store;
     const D::Flat_signal* phi_fixed = D::resolve_signal(

@@ -26,73 +26,72 @@ namespace Denoising {
 // listed in the order they are settled (so parents come first), ties broken
 // by item index. A neighbour the restricted graph cannot reach (impossible
 // for neighbourhoods grown by geometric_neighborhoods()) hangs from i.
-template <typename Adjacency>
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename Adjacency>
 Path_forest shortest_graph_paths(const std::vector<Vec3>& positions, const Adjacency& adjacent, const Csr& neighbors)
 {
   const std::size_t n = positions.size();
-  Path_forest forest;
-  forest.offsets.assign(n + 1, 0);
-  forest.face.reserve(neighbors.items.size());
-  forest.parent.reserve(neighbors.items.size());
-  std::vector<std::uint32_t> stamp(n, std::uint32_t(-1)), local(n, 0);
-  std::vector<double> dist(n, 0.);
-  std::vector<std::int32_t> pred(n, Path_forest::root);
-  std::vector<char> settled(n, 0);
   typedef std::pair<double, std::uint32_t> Entry;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
-  for(std::size_t i = 0; i < n; ++i)
+  struct Scratch
   {
-    const std::uint32_t mark = std::uint32_t(i);
-    for(std::uint32_t k = neighbors.begin(i); k < neighbors.end(i); ++k)
-    {
-      const std::uint32_t j = neighbors.items[k];
-      stamp[j] = mark;
-      dist[j] = std::numeric_limits<double>::infinity();
-      settled[j] = 0;
-      pred[j] = -2; // unreached
-    }
-    stamp[i] = mark;
-    dist[i] = 0.;
-    settled[i] = 0;
-    const std::uint32_t base = std::uint32_t(forest.face.size());
-    heap.push(Entry(0., mark));
-    while(!heap.empty())
-    {
-      const Entry top = heap.top();
-      heap.pop();
-      const std::uint32_t a = top.second;
-      if(settled[a] || top.first > dist[a])
-        continue;
-      settled[a] = 1;
-      if(a != mark)
-      {
-        local[a] = std::uint32_t(forest.face.size()) - base;
-        forest.face.push_back(a);
-        forest.parent.push_back(pred[a] == -1 ? Path_forest::root : std::int32_t(local[pred[a]]));
-      }
-      adjacent(a, [&](std::uint32_t g) {
-        if(stamp[g] != mark || settled[g] || g == a)
-          return;
-        const double d = dist[a] + norm(positions[g] - positions[a]);
-        if(d < dist[g])
+    std::vector<std::uint32_t> stamp, local;
+    std::vector<double> dist;
+    std::vector<std::int32_t> pred;
+    std::vector<char> settled;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+  };
+  std::vector<Path_node> nodes;
+  Path_forest forest;
+  build_lists<ConcurrencyTag>(
+      n, forest.offsets, nodes,
+      [n] {
+        return Scratch{std::vector<std::uint32_t>(n, std::uint32_t(-1)), std::vector<std::uint32_t>(n, 0),
+                       std::vector<double>(n, 0.), std::vector<std::int32_t>(n, Path_forest::root),
+                       std::vector<char>(n, 0), {}};
+      },
+      [&](std::size_t i, Scratch& s, std::vector<Path_node>& out) {
+        const std::uint32_t mark = std::uint32_t(i);
+        for(std::uint32_t k = neighbors.begin(i); k < neighbors.end(i); ++k)
         {
-          dist[g] = d;
-          pred[g] = a == mark ? -1 : std::int32_t(a);
-          heap.push(Entry(d, g));
+          const std::uint32_t j = neighbors.items[k];
+          s.stamp[j] = mark;
+          s.dist[j] = std::numeric_limits<double>::infinity();
+          s.settled[j] = 0;
         }
+        s.stamp[i] = mark;
+        s.dist[i] = 0.;
+        s.settled[i] = 0;
+        const std::size_t base = out.size();
+        s.heap.push(Entry(0., mark));
+        while(!s.heap.empty())
+        {
+          const Entry top = s.heap.top();
+          s.heap.pop();
+          const std::uint32_t a = top.second;
+          if(s.settled[a] || top.first > s.dist[a])
+            continue;
+          s.settled[a] = 1;
+          if(a != mark)
+          {
+            s.local[a] = std::uint32_t(out.size() - base);
+            out.push_back(Path_node{a, s.pred[a] == -1 ? Path_forest::root : std::int32_t(s.local[s.pred[a]])});
+          }
+          adjacent(a, [&](std::uint32_t g) {
+            if(s.stamp[g] != mark || s.settled[g] || g == a)
+              return;
+            const double d = s.dist[a] + norm(positions[g] - positions[a]);
+            if(d < s.dist[g])
+            {
+              s.dist[g] = d;
+              s.pred[g] = a == mark ? -1 : std::int32_t(a);
+              s.heap.push(Entry(d, g));
+            }
+          });
+        }
+        for(std::uint32_t k = neighbors.begin(i); k < neighbors.end(i); ++k)
+          if(!s.settled[neighbors.items[k]])
+            out.push_back(Path_node{neighbors.items[k], Path_forest::root});
       });
-    }
-    for(std::uint32_t k = neighbors.begin(i); k < neighbors.end(i); ++k)
-    {
-      const std::uint32_t j = neighbors.items[k];
-      if(!settled[j])
-      {
-        forest.face.push_back(j);
-        forest.parent.push_back(Path_forest::root);
-      }
-    }
-    forest.offsets[i + 1] = std::uint32_t(forest.face.size());
-  }
+  forest.set_nodes(nodes);
   return forest;
 }
 

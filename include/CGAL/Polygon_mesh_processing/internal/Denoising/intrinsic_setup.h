@@ -95,7 +95,7 @@ double mean_adjacent_distance(const std::vector<Vec3>& positions, const Adjacenc
 // `positions`. The square pattern needs the items to be the faces of `faces`
 // (with their data `fd`); it is refused for other items. With
 // `use_step_length`, the step lengths of eq. 4 are set from the positions.
-template <typename Adjacency>
+template <typename ConcurrencyTag, typename Adjacency>
 Path_forest make_paths(Intrinsic_path_strategy strategy, bool use_step_length, const std::vector<Vec3>& positions,
                        const Adjacency& adjacent, const Csr& neighbors, const Flat_mesh* faces, const Face_data* fd,
                        const char* fname)
@@ -104,13 +104,13 @@ Path_forest make_paths(Intrinsic_path_strategy strategy, bool use_step_length, c
   switch(strategy)
   {
   case Intrinsic_path_strategy::DIRECT: paths = direct_paths(neighbors); break;
-  case Intrinsic_path_strategy::SHORTEST_GRAPH_PATH: paths = shortest_graph_paths(positions, adjacent, neighbors); break;
+  case Intrinsic_path_strategy::SHORTEST_GRAPH_PATH: paths = shortest_graph_paths<ConcurrencyTag>(positions, adjacent, neighbors); break;
   case Intrinsic_path_strategy::SQUARE_PATTERN:
     if(faces == nullptr || fd == nullptr)
       throw std::invalid_argument(std::string(fname) +
                                   ": square-pattern paths are defined for face signals only; use DIRECT or "
                                   "SHORTEST_GRAPH_PATH for vertex signals.");
-    paths = square_pattern_paths(*faces, *fd, neighbors);
+    paths = square_pattern_paths<ConcurrencyTag>(*faces, *fd, neighbors);
     break;
   default: throw std::invalid_argument(std::string(fname) + ": unknown path strategy.");
   }
@@ -155,7 +155,7 @@ Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParam
   compute_face_data<ConcurrencyTag>(s.mesh, s.mesh.points, s.input_faces);
   s.radius = read_radius(np, fname, mean_adjacent_centroid_distance(s.mesh, s.input_faces));
   s.neighbors = geometric_neighborhoods<ConcurrencyTag>(s.mesh, s.input_faces.centroids, s.radius);
-  s.paths = make_paths(strategy, step_length, s.input_faces.centroids, Face_vertex_adjacency{s.mesh}, s.neighbors,
+  s.paths = make_paths<ConcurrencyTag>(strategy, step_length, s.input_faces.centroids, Face_vertex_adjacency{s.mesh}, s.neighbors,
                        &s.mesh, &s.input_faces, fname);
   return s;
 }

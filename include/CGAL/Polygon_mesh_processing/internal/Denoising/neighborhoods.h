@@ -93,55 +93,29 @@ Csr geometric_neighborhoods(const std::vector<Vec3>& positions, const Adjacency&
 {
   const std::size_t n = positions.size();
   const double r2 = radius * radius;
-  // Pass 1 fills one list per chunk, pass 2 concatenates them.
-  std::vector<std::uint32_t> counts(n, 0);
-  struct Chunk
+  struct Scratch
   {
-    std::size_t first;
-    std::vector<std::uint32_t> items;
+    std::vector<std::uint32_t> stamp, queue;
   };
-  // few chunks: each one allocates a visit stamp array of the mesh's size
-  const std::size_t chunk_size = (std::max)(std::size_t(4096), n / 32 + 1);
-  const std::size_t nchunks = (n + chunk_size - 1) / chunk_size;
-  std::vector<Chunk> chunks(nchunks);
-  for_each_chunk<ConcurrencyTag>(
-      nchunks,
-      [&](std::size_t cb, std::size_t ce) {
-        std::vector<std::uint32_t> stamp(n, std::uint32_t(-1));
-        std::vector<std::uint32_t> queue;
-        for(std::size_t c = cb; c < ce; ++c)
-        {
-          Chunk& chunk = chunks[c];
-          chunk.first = c * chunk_size;
-          const std::size_t last = (std::min)(n, chunk.first + chunk_size);
-          for(std::size_t i = chunk.first; i < last; ++i)
-          {
-            const Vec3& pi = positions[i];
-            const std::uint32_t mark = std::uint32_t(i);
-            queue.clear();
-            queue.push_back(mark);
-            stamp[i] = mark;
-            for(std::size_t q = 0; q < queue.size(); ++q)
-              adjacent(queue[q], [&](std::uint32_t g) {
-                if(stamp[g] == mark)
-                  return;
-                stamp[g] = mark;
-                if(squared_norm(positions[g] - pi) <= r2)
-                  queue.push_back(g);
-              });
-            counts[i] = std::uint32_t(queue.size() - 1);
-            chunk.items.insert(chunk.items.end(), queue.begin() + 1, queue.end());
-          }
-        }
-      },
-      1);
   Csr csr;
-  csr.offsets.assign(n + 1, 0);
-  for(std::size_t f = 0; f < n; ++f)
-    csr.offsets[f + 1] = csr.offsets[f] + counts[f];
-  csr.items.reserve(csr.offsets[n]);
-  for(const Chunk& c : chunks)
-    csr.items.insert(csr.items.end(), c.items.begin(), c.items.end());
+  build_lists<ConcurrencyTag>(
+      n, csr.offsets, csr.items, [n] { return Scratch{std::vector<std::uint32_t>(n, std::uint32_t(-1)), {}}; },
+      [&](std::size_t i, Scratch& s, std::vector<std::uint32_t>& out) {
+        const Vec3& pi = positions[i];
+        const std::uint32_t mark = std::uint32_t(i);
+        s.queue.clear();
+        s.queue.push_back(mark);
+        s.stamp[i] = mark;
+        for(std::size_t q = 0; q < s.queue.size(); ++q)
+          adjacent(s.queue[q], [&](std::uint32_t g) {
+            if(s.stamp[g] == mark)
+              return;
+            s.stamp[g] = mark;
+            if(squared_norm(positions[g] - pi) <= r2)
+              s.queue.push_back(g);
+          });
+        out.insert(out.end(), s.queue.begin() + 1, s.queue.end());
+      });
   return csr;
 }
 

@@ -10,7 +10,10 @@
 
 #include <CGAL/tags.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 #include <type_traits>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -46,6 +49,44 @@ void for_each_chunk(std::size_t n, const Body& body, std::size_t grain = 256)
     body(std::size_t(0), n);
   }
 #endif
+}
+
+// Builds a list of records for each item 0..n-1, in parallel chunks, and
+// concatenates the lists in item order: offsets (size n + 1) and records.
+// `make_scratch()` makes the scratch state of one chunk (allocated once per
+// chunk); `fill(i, scratch, out)` appends item i's records to `out`.
+template <typename ConcurrencyTag, typename Record, typename MakeScratch, typename Fill>
+void build_lists(std::size_t n, std::vector<std::uint32_t>& offsets, std::vector<Record>& records,
+                 const MakeScratch& make_scratch, const Fill& fill)
+{
+  // few chunks: a chunk's scratch may be as large as the mesh
+  const std::size_t chunk_size = (std::max)(std::size_t(2048), n / 64 + 1);
+  const std::size_t nchunks = (n + chunk_size - 1) / chunk_size;
+  std::vector<std::vector<Record>> chunks(nchunks);
+  offsets.assign(n + 1, 0);
+  for_each_chunk<ConcurrencyTag>(
+      nchunks,
+      [&](std::size_t cb, std::size_t ce) {
+        auto scratch = make_scratch();
+        for(std::size_t c = cb; c < ce; ++c)
+        {
+          std::vector<Record>& out = chunks[c];
+          const std::size_t last = (std::min)(n, (c + 1) * chunk_size);
+          for(std::size_t i = c * chunk_size; i < last; ++i)
+          {
+            const std::size_t before = out.size();
+            fill(i, scratch, out);
+            offsets[i + 1] = std::uint32_t(out.size() - before);
+          }
+        }
+      },
+      1);
+  for(std::size_t i = 0; i < n; ++i)
+    offsets[i + 1] += offsets[i];
+  records.clear();
+  records.reserve(offsets[n]);
+  for(const auto& c : chunks)
+    records.insert(records.end(), c.begin(), c.end());
 }
 
 } // namespace Denoising

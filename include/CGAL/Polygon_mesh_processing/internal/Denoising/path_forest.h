@@ -30,6 +30,13 @@ namespace Denoising {
 //   geodesic crosses on its way to a neighbour) and gets no weight itself;
 // - `step[k]` is the step length ||q_k - q_parent|| of eq. 4, multiplying the
 //   node's terms of both sums (empty: step length 1, as in eq. 8-9).
+// A node of a path tree: the item and its parent (local index or root).
+struct Path_node
+{
+  std::uint32_t face;
+  std::int32_t parent;
+};
+
 struct Path_forest
 {
   static constexpr std::int32_t root = -1;
@@ -38,6 +45,19 @@ struct Path_forest
   std::vector<std::int32_t> parent; // local to the face's node range
   std::vector<char> weighted;       // empty: every node is weighted
   std::vector<double> step;         // empty: every step length is 1
+
+  // fills face and parent from the nodes of all trees, in order
+  template <typename Nodes>
+  void set_nodes(const Nodes& nodes)
+  {
+    face.resize(nodes.size());
+    parent.resize(nodes.size());
+    for(std::size_t k = 0; k < nodes.size(); ++k)
+    {
+      face[k] = nodes[k].face;
+      parent[k] = nodes[k].parent;
+    }
+  }
 
   bool is_weighted(std::size_t k) const { return weighted.empty() || weighted[k] != 0; }
   double step_length(std::size_t k) const { return step.empty() ? 1. : step[k]; }

@@ -12,12 +12,58 @@
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/path_forest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
 namespace Denoising {
+
+// exp(x) for x <= 0, accurate to about 1e-16 relative (as std::exp), inline
+// and branch-free, for the weights loop: x = (64 k + j) ln(2)/64 + r with
+// |r| <= ln(2)/128, exp(x) = 2^k * 2^(j/64) * e^r, the 64 values 2^(j/64)
+// from a table and e^r from its Taylor polynomial of degree 5 (truncation
+// below 4e-17). Results at and under 1e-307 (x <= -707) are flushed to 0.
+struct Exp_table
+{
+  double two_to_j_64[64];
+  Exp_table()
+  {
+    for(int j = 0; j < 64; ++j)
+      two_to_j_64[j] = std::exp2(j / 64.);
+  }
+  static const Exp_table& instance()
+  {
+    static const Exp_table table;
+    return table;
+  }
+};
+
+inline double exp_nonpositive(double x, const Exp_table& table)
+{
+  const double shifter = 6755399441055744.0; // 1.5 * 2^52: adding it rounds to an integer m, kept in the low bits
+  const std::uint64_t shifter_bits = 0x4338000000000000ull;
+  const double xc = x > -707. ? x : -707.; // keeps k in range; the result is flushed below
+  const double t = xc * (64. / 6.93147180559945309417e-01) + shifter;
+  const double md = t - shifter;
+  const double r = (xc - md * (6.93147180369123816490e-01 / 64.)) - md * (1.90821492927058770002e-10 / 64.);
+  const double r2 = r * r;
+  const double p = 1. + r + r2 * ((0.5 + r * (1. / 6.)) + r2 * ((1. / 24.) + r * (1. / 120.)));
+  std::uint64_t m;
+  std::memcpy(&m, &t, sizeof m);
+  m -= shifter_bits; // m = 64 k + j in two's complement
+  const double base = table.two_to_j_64[m & 63u];
+  std::uint64_t bits;
+  std::memcpy(&bits, &base, sizeof bits);
+  bits += static_cast<std::uint64_t>(static_cast<std::int64_t>(m) >> 6) << 52; // times 2^k
+  double scale;
+  std::memcpy(&scale, &bits, sizeof scale);
+  return x > -707. ? p * scale : 0.;
+}
+
+inline double exp_nonpositive(double x) { return exp_nonpositive(x, Exp_table::instance()); }
 
 struct Intrinsic_kernel
 {
@@ -50,7 +96,25 @@ struct Intrinsic_kernel
   {
     const double ds2 = squared_distance(spatial_sum, spatial_exponent);
     const double dr2 = squared_distance(range_sum, range_exponent);
-    return std::exp(-ds2 / (2. * sigma_spatial * sigma_spatial) - dr2 / (2. * sigma_range * sigma_range));
+    return exp_nonpositive(-ds2 / (2. * sigma_spatial * sigma_spatial) - dr2 / (2. * sigma_range * sigma_range));
+  }
+  // weight[k] = weight(spatial[k], range[k]) for k < n; one plain loop per
+  // exponent case, so that the common ones (1 and 2) vectorise
+  void weights(const double* spatial, const double* range, std::size_t n, double* weight) const
+  {
+    const double a = 1. / (2. * sigma_spatial * sigma_spatial), b = 1. / (2. * sigma_range * sigma_range);
+    const Exp_table& table = Exp_table::instance();
+    if(spatial_exponent == 1. && range_exponent == 1.)
+      for(std::size_t k = 0; k < n; ++k)
+        weight[k] = exp_nonpositive(-(spatial[k] * spatial[k]) * a - (range[k] * range[k]) * b, table);
+    else if(spatial_exponent == 2. && range_exponent == 2.)
+      for(std::size_t k = 0; k < n; ++k)
+        weight[k] = exp_nonpositive(-spatial[k] * a - range[k] * b, table);
+    else
+      for(std::size_t k = 0; k < n; ++k)
+        weight[k] = exp_nonpositive(-squared_distance(spatial[k], spatial_exponent) * a -
+                                        squared_distance(range[k], range_exponent) * b,
+                                    table);
   }
 };
 
@@ -72,29 +136,36 @@ void intrinsic_weights_pass(const Path_forest& forest, const Intrinsic_kernel& k
   const std::size_t n = forest.number_of_faces();
   const std::size_t max_nodes = forest.max_nodes_per_face();
   const bool with_steps = !forest.step.empty();
+  const bool l1 = kernel.spatial_exponent == 1. && kernel.range_exponent == 1.;
   for_each_chunk<ConcurrencyTag>(n, [&](std::size_t ib, std::size_t ie) {
-    std::vector<double> spatial(max_nodes), range(max_nodes), weight(max_nodes);
+    // slot 0 holds the root's sums (0); node k of a tree is slot k + 1
+    std::vector<double> spatial(max_nodes + 1, 0.), range(max_nodes + 1, 0.), weight(max_nodes);
     for(std::size_t i = ib; i < ie; ++i)
     {
       const std::uint32_t b = forest.offsets[i], e = forest.offsets[i + 1];
-      for(std::uint32_t k = b; k < e; ++k)
-      {
-        const std::uint32_t j = forest.face[k];
-        const std::int32_t p = forest.parent[k];
-        const bool from_root = p == Path_forest::root;
-        const std::uint32_t from = from_root ? std::uint32_t(i) : forest.face[b + p];
-        double ds = kernel.power_term(spatial_sq(j, from), kernel.spatial_exponent);
-        double dr = kernel.power_term(range_sq(j, std::uint32_t(i)), kernel.range_exponent);
-        if(with_steps)
+      const std::uint32_t* face = forest.face.data() + b;
+      const std::int32_t* parent = forest.parent.data() + b;
+      const std::uint32_t count = e - b;
+      if(l1 && !with_steps) // the paper's case, without pow or branches
+        for(std::uint32_t k = 0; k < count; ++k)
         {
-          ds *= forest.step[k];
-          dr *= forest.step[k];
+          const std::int32_t p = parent[k];
+          const std::uint32_t from = p < 0 ? std::uint32_t(i) : face[p];
+          spatial[k + 1] = spatial[p + 1] + std::sqrt(spatial_sq(face[k], from));
+          range[k + 1] = range[p + 1] + std::sqrt(range_sq(face[k], std::uint32_t(i)));
         }
-        const std::uint32_t local = k - b;
-        spatial[local] = (from_root ? 0. : spatial[p]) + ds;
-        range[local] = (from_root ? 0. : range[p]) + dr;
-        weight[local] = kernel.weight(spatial[local], range[local]);
-      }
+      else
+        for(std::uint32_t k = 0; k < count; ++k)
+        {
+          const std::int32_t p = parent[k];
+          const std::uint32_t from = p < 0 ? std::uint32_t(i) : face[p];
+          const double step = with_steps ? forest.step[b + k] : 1.;
+          spatial[k + 1] =
+              spatial[p + 1] + step * kernel.power_term(spatial_sq(face[k], from), kernel.spatial_exponent);
+          range[k + 1] =
+              range[p + 1] + step * kernel.power_term(range_sq(face[k], std::uint32_t(i)), kernel.range_exponent);
+        }
+      kernel.weights(spatial.data() + 1, range.data() + 1, count, weight.data());
       average(i, b, e, weight.data());
     }
   });
@@ -118,8 +189,9 @@ void intrinsic_filter_pass(const Path_forest& forest, const std::vector<Vec3>& n
         Vec3 sum = {0., 0., 0.};
         if(kernel.include_self)
           sum = areas[i] * normals[i];
+        const bool all_weighted = forest.weighted.empty();
         for(std::uint32_t k = b; k < e; ++k)
-          if(forest.is_weighted(k))
+          if(all_weighted || forest.weighted[k])
           {
             const std::uint32_t j = forest.face[k];
             sum = sum + (areas[j] * w[k - b]) * normals[j];

@@ -70,60 +70,54 @@ inline bool projected_areal_coordinates(const Vec3& a, const Vec3& b, const Vec3
 // it once, on the input mesh). Neighbours whose projected centroid falls inside
 // face i are dropped (NOTES 6). For a degenerate face i (zero normal) the
 // regions are undefined: all its neighbours hang directly from i.
-inline Path_forest square_pattern_paths(const Flat_mesh& m, const Face_data& fd, const Csr& neighbors)
+template <typename ConcurrencyTag = CGAL::Sequential_tag>
+Path_forest square_pattern_paths(const Flat_mesh& m, const Face_data& fd, const Csr& neighbors)
 {
-  const std::size_t nf = m.number_of_faces();
+  typedef std::array<std::vector<std::pair<double, std::uint32_t>>, 6> Regions;
+  std::vector<Path_node> nodes;
   Path_forest forest;
-  forest.offsets.assign(nf + 1, 0);
-  forest.face.reserve(neighbors.items.size());
-  forest.parent.reserve(neighbors.items.size());
-  std::array<std::vector<std::pair<double, std::uint32_t>>, 6> regions;
-  for(std::size_t i = 0; i < nf; ++i)
-  {
-    for(auto& r : regions)
-      r.clear();
-    const auto& t = m.triangles[i];
-    const Vec3& ci = fd.centroids[i];
-    const Vec3& ni = fd.normals[i];
-    const bool degenerate = squared_norm(ni) == 0.;
-    for(std::uint32_t k = neighbors.begin(i); k < neighbors.end(i); ++k)
-    {
-      const std::uint32_t j = neighbors.items[k];
-      const double dist = squared_norm(fd.centroids[j] - ci);
-      if(degenerate)
-      {
-        regions[0].emplace_back(dist, j);
-        continue;
-      }
-      std::array<double, 3> l;
-      if(!projected_areal_coordinates(m.points[t[0]], m.points[t[1]], m.points[t[2]], ni,
-                                      fd.centroids[j], l))
-      {
-        regions[0].emplace_back(dist, j);
-        continue;
-      }
-      const int r = areal_region(l[0], l[1], l[2]);
-      if(r >= 0)
-        regions[r].emplace_back(dist, j);
-    }
-    for(auto& r : regions)
-    {
-      std::sort(r.begin(), r.end()); // by distance, ties by face index
-      const std::int32_t start = std::int32_t(forest.face.size() - forest.offsets[i]);
-      for(std::size_t k = 1; k <= r.size(); ++k)
-      {
-        forest.face.push_back(r[k - 1].second);
-        if(degenerate)
-          forest.parent.push_back(Path_forest::root);
-        else
+  build_lists<ConcurrencyTag>(
+      m.number_of_faces(), forest.offsets, nodes, [] { return Regions(); },
+      [&](std::size_t i, Regions& regions, std::vector<Path_node>& out) {
+        for(auto& r : regions)
+          r.clear();
+        const std::size_t item_begin = out.size(); // parents are local to the item's nodes
+        const auto& t = m.triangles[i];
+        const Vec3& ci = fd.centroids[i];
+        const Vec3& ni = fd.normals[i];
+        const bool degenerate = squared_norm(ni) == 0.;
+        for(std::uint32_t k = neighbors.begin(i); k < neighbors.end(i); ++k)
         {
-          const std::uint32_t pk = square_pattern_parent_rank(std::uint32_t(k));
-          forest.parent.push_back(pk == 0 ? Path_forest::root : start + std::int32_t(pk) - 1);
+          const std::uint32_t j = neighbors.items[k];
+          const double dist = squared_norm(fd.centroids[j] - ci);
+          std::array<double, 3> l;
+          if(degenerate || !projected_areal_coordinates(m.points[t[0]], m.points[t[1]], m.points[t[2]], ni,
+                                                        fd.centroids[j], l))
+          {
+            regions[0].emplace_back(dist, j);
+            continue;
+          }
+          const int r = areal_region(l[0], l[1], l[2]);
+          if(r >= 0)
+            regions[r].emplace_back(dist, j);
         }
-      }
-    }
-    forest.offsets[i + 1] = std::uint32_t(forest.face.size());
-  }
+        for(auto& r : regions)
+        {
+          std::sort(r.begin(), r.end()); // by distance, ties by face index
+          const std::int32_t start = std::int32_t(out.size() - item_begin);
+          for(std::size_t k = 1; k <= r.size(); ++k)
+          {
+            std::int32_t parent = Path_forest::root;
+            if(!degenerate)
+            {
+              const std::uint32_t pk = square_pattern_parent_rank(std::uint32_t(k));
+              parent = pk == 0 ? Path_forest::root : start + std::int32_t(pk) - 1;
+            }
+            out.push_back(Path_node{r[k - 1].second, parent});
+          }
+        }
+      });
+  forest.set_nodes(nodes);
   return forest;
 }
 
