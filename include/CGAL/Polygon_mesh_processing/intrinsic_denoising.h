@@ -8,6 +8,7 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/geodesic_paths.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/path_weights.h>
@@ -82,6 +83,16 @@ Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParam
   switch(strategy)
   {
   case Intrinsic_path_strategy::DIRECT: s.paths = direct_paths(s.neighbors); break;
+  case Intrinsic_path_strategy::GEODESIC:
+  {
+    Geodesic_path_options go;
+    go.patch_rings = choose_parameter(get_parameter(np, internal_np::geodesic_patch_rings), 1u);
+    go.step_length = choose_parameter(get_parameter(np, internal_np::use_step_length), false);
+    if(go.step_length)
+      go.length_unit = mean_adjacent_centroid_distance(s.mesh, s.input_faces);
+    s.paths = geodesic_paths<ConcurrencyTag>(s.mesh, s.input_faces, s.neighbors, go);
+    break;
+  }
   case Intrinsic_path_strategy::SQUARE_PATTERN:
   default: s.paths = square_pattern_paths(s.mesh, s.input_faces, s.neighbors); break;
   }
@@ -151,6 +162,24 @@ Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParam
       \cgalParamDescription{how paths are chosen}
       \cgalParamType{`CGAL::Polygon_mesh_processing::Intrinsic_path_strategy`}
       \cgalParamDefault{`Intrinsic_path_strategy::SQUARE_PATTERN`}
+    \cgalParamNEnd
+    \cgalParamNBegin{use_step_length}
+      \cgalParamDescription{with `Intrinsic_path_strategy::GEODESIC`: if `true`, each term of both sums of
+        eq. 9 is multiplied by its step length \f$\|q_{x+1} - q_x\|\f$ (eq. 4), measured along the geodesic
+        in units of \f$d\f$ (mean distance between the centroids of edge-adjacent faces), where \f$q_x\f$ is
+        the middle of the geodesic's part in face \f$x\f$ (\f$c_i\f$ and \f$c_j\f$ at the ends); ignored by
+        the other strategies}
+      \cgalParamType{bool}
+      \cgalParamDefault{`false` (unit steps, as in eq. 8)}
+    \cgalParamNEnd
+    \cgalParamNBegin{geodesic_patch_rings}
+      \cgalParamDescription{with `Intrinsic_path_strategy::GEODESIC`: the geodesics from \f$c_i\f$ are
+        computed on a copy of face \f$i\f$, its neighbourhood and this number of rings of faces (sharing a
+        vertex) around it; a neighbour no geodesic reaches inside that patch gets the direct path
+        \f$\{i, j\}\f$. A geodesic through a vertex crosses only the faces its segments cross, not the
+        faces it touches at the vertex.}
+      \cgalParamType{unsigned int}
+      \cgalParamDefault{`1`}
     \cgalParamNEnd
     \cgalParamNBegin{include_self_weight}
       \cgalParamDescription{if `true`, \f$A_i n_i\f$ is added to the sum; eq. 8 read literally leaves it out}
@@ -240,7 +269,7 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
       \cgalParamType{unsigned int}
       \cgalParamDefault{`2`}
     \cgalParamNEnd
-    \cgalParamNBegin{sigma_spatial, sigma_range, spatial_exponent, range_exponent, neighbor_radius, relative_neighbor_radius, path_strategy, include_self_weight}
+    \cgalParamNBegin{sigma_spatial, sigma_range, spatial_exponent, range_exponent, neighbor_radius, relative_neighbor_radius, path_strategy, use_step_length, geodesic_patch_rings, include_self_weight}
       \cgalParamDescription{as for `intrinsic_filter_face_normals()`}
     \cgalParamNEnd
     \cgalParamNBegin{face_normal_map}

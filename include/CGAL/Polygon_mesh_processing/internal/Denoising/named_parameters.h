@@ -30,7 +30,12 @@ enum class Intrinsic_path_strategy {
   SQUARE_PATTERN,
   /// The path is `{i, j}` (no intermediate face): with it the intrinsic filter
   /// degenerates to a bilateral normal filter on the same neighbourhood.
-  DIRECT
+  DIRECT,
+  /// The paper's first formulation (section 3.2, figure 2): the path is the
+  /// exact geodesic from centroid `c_i` to centroid `c_j` (CGAL's
+  /// `Surface_mesh_shortest_path`, computed on a copy of the neighbourhood
+  /// patch), its nodes the faces the geodesic crosses, in order.
+  GEODESIC
 };
 
 } // namespace Polygon_mesh_processing

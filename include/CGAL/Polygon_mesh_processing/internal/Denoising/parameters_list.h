@@ -22,3 +22,7 @@ CGAL_add_named_parameter(relative_neighbor_radius_t, relative_neighbor_radius, r
 CGAL_add_named_parameter(include_self_weight_t, include_self_weight, include_self_weight)
 // how the path from face i to neighbour j is chosen (Intrinsic_path_strategy)
 CGAL_add_named_parameter(path_strategy_t, path_strategy, path_strategy)
+// GEODESIC paths: step lengths of eq. 4 along the geodesic (off: unit steps, eq. 8)
+CGAL_add_named_parameter(use_step_length_t, use_step_length, use_step_length)
+// GEODESIC paths: rings of faces added around the neighbourhood patch
+CGAL_add_named_parameter(geodesic_patch_rings_t, geodesic_patch_rings, geodesic_patch_rings)
