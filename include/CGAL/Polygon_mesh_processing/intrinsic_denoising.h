@@ -175,7 +175,9 @@ Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParam
     \cgalParamNBegin{geodesic_patch_rings}
       \cgalParamDescription{with `Intrinsic_path_strategy::GEODESIC`: the geodesics from \f$c_i\f$ are
         computed on a copy of face \f$i\f$, its neighbourhood and this number of rings of faces (sharing a
-        vertex) around it; a neighbour no geodesic reaches inside that patch gets the direct path
+        vertex) around it, of which only the faces closer to \f$c_i\f$ than the farthest neighbour centroid
+        are kept (faces of zero area are left out); a neighbour no geodesic reaches inside that patch gets the
+        direct path
         \f$\{i, j\}\f$. A geodesic through a vertex crosses only the faces its segments cross, not the
         faces it touches at the vertex.}
       \cgalParamType{unsigned int}

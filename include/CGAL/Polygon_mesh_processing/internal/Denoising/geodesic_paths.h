@@ -38,7 +38,8 @@ struct Geodesic_path_options
   // Rings of faces (sharing a vertex) added around the neighbourhood to form
   // the patch the geodesics are computed on, so that a geodesic between two
   // neighbours may pass through faces whose centroid lies just outside the
-  // radius. 0: the neighbourhood and face i only.
+  // radius; only faces that come within the distance of the farthest
+  // neighbour centroid are added. 0: the neighbourhood and face i only.
   unsigned int patch_rings = 1;
   // Fill Path_forest::step with geodesic step lengths (eq. 4), divided by
   // `length_unit`; otherwise leave it empty (unit steps, eq. 8).
@@ -85,12 +86,47 @@ struct Geodesic_path
   }
 };
 
+// Squared distance from p to the triangle (a, b, c) (closest point by the
+// Voronoi regions of the vertices, edges and interior).
+inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if(d1 <= 0. && d2 <= 0.)
+    return squared_norm(ap);
+  const Vec3 bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if(d3 >= 0. && d4 <= d3)
+    return squared_norm(bp);
+  const double vc = d1 * d4 - d3 * d2;
+  if(vc <= 0. && d1 >= 0. && d3 <= 0.)
+    return squared_norm(ap - (d1 / (d1 - d3)) * ab);
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if(d6 >= 0. && d5 <= d6)
+    return squared_norm(cp);
+  const double vb = d5 * d2 - d1 * d6;
+  if(vb <= 0. && d2 >= 0. && d6 <= 0.)
+    return squared_norm(ap - (d2 / (d2 - d6)) * ac);
+  const double va = d3 * d6 - d5 * d4;
+  if(va <= 0. && (d4 - d3) >= 0. && (d5 - d6) >= 0.)
+    return squared_norm(bp - ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b));
+  const double denom = va + vb + vc;
+  if(!(denom > 0.)) // degenerate triangle: nearest of its vertices
+    return (std::min)({squared_norm(ap), squared_norm(bp), squared_norm(cp)});
+  const double v = vb / denom, w = vc / denom;
+  return squared_norm(ap - v * ab - w * ac);
+}
+
 // Geodesics from the centroid of one face to the centroids of its neighbours,
 // inside a patch of the mesh. Holds the scratch memory of one thread: make one
 // per thread and call set_source() then path_to() for each face.
 //
 // The patch is a CGAL::Surface_mesh copy of face i, its neighbours and
-// `patch_rings` rings of faces around them, without the faces of zero area
+// `patch_rings` rings of faces around them (only the faces that come within
+// R_i of c_i, R_i the distance to the farthest neighbour centroid), plus the
+// faces around each vertex where selected faces meet only at that vertex (the
+// neighbourhood grows through shared vertices), without the faces of zero area
 // (zero normal in Face_data). Faces of the mesh that only share a vertex
 // inside the patch are kept apart in the copy (the vertex is duplicated per
 // fan of faces connected through edges), so the copy is always a manifold:
@@ -151,7 +187,8 @@ public:
 
   Geodesic_patch_solver(const Flat_mesh& m, const Face_data& fd, unsigned int patch_rings)
     : m_(m), fd_(fd), rings_(patch_rings), face_stamp_(m.number_of_faces(), no_face),
-      face_local_(m.number_of_faces(), 0), vertex_stamp_(m.number_of_vertices(), no_face)
+      face_local_(m.number_of_faces(), 0), vertex_stamp_(m.number_of_vertices(), no_face),
+      tested_stamp_(m.number_of_faces(), no_face), bridge_stamp_(m.number_of_vertices(), no_face)
   {}
 
   // Builds the patch of face i with the given neighbours and the shortest-path
@@ -169,13 +206,37 @@ public:
     {
       std::fill(face_stamp_.begin(), face_stamp_.end(), no_face);
       std::fill(vertex_stamp_.begin(), vertex_stamp_.end(), no_face);
+      std::fill(tested_stamp_.begin(), tested_stamp_.end(), no_face);
+      std::fill(bridge_stamp_.begin(), bridge_stamp_.end(), no_face);
       stamp_ = 0;
     }
     if(is_degenerate(i))
       return false;
     select(i);
+    const Vec3& ci = fd_.centroids[i];
+    double reach2 = 0.; // squared distance to the farthest neighbour centroid
     for(NeighborIterator it = nb; it != ne; ++it)
+    {
       select(*it);
+      reach2 = (std::max)(reach2, squared_norm(fd_.centroids[*it] - ci));
+    }
+    // where selected faces meet at a vertex only (the neighbourhood grows
+    // through shared vertices), the faces around that vertex are added, so
+    // that the patch is connected through edges wherever the neighbourhood is
+    const std::size_t selected = global_.size();
+    for(std::size_t k = 0; k < selected; ++k)
+      for(std::uint32_t v : m_.triangles[global_[k]])
+      {
+        if(bridge_stamp_[v] == stamp_)
+          continue;
+        bridge_stamp_[v] = stamp_;
+        if(selected_fans(v) > 1)
+          for(std::uint32_t q = m_.vertex_face_offsets[v]; q < m_.vertex_face_offsets[v + 1]; ++q)
+            select(m_.vertex_faces[q]);
+      }
+    // rings: faces sharing a vertex with the patch that come within that
+    // distance of c_i (any face a straight segment from c_i to a neighbour's
+    // centroid crosses does)
     std::size_t ring_begin = 0;
     for(unsigned int r = 0; r < rings_; ++r)
     {
@@ -183,7 +244,15 @@ public:
       for(std::size_t k = ring_begin; k < ring_end; ++k)
         for(std::uint32_t v : m_.triangles[global_[k]])
           for(std::uint32_t q = m_.vertex_face_offsets[v]; q < m_.vertex_face_offsets[v + 1]; ++q)
-            select(m_.vertex_faces[q]);
+          {
+            const std::uint32_t g = m_.vertex_faces[q];
+            if(tested_stamp_[g] == stamp_)
+              continue;
+            tested_stamp_[g] = stamp_;
+            const auto& t = m_.triangles[g];
+            if(squared_distance_to_triangle(ci, m_.points[t[0]], m_.points[t[1]], m_.points[t[2]]) <= reach2)
+              select(g);
+          }
       ring_begin = ring_end;
     }
     if(!build_patch())
@@ -239,6 +308,44 @@ private:
     global_.push_back(f);
   }
 
+  // Groups the selected faces around v (in fan_faces_) into fans of faces
+  // connected through edges (v, w) (fan_find() gives a fan's representative);
+  // returns the number of fans.
+  std::size_t selected_fans(std::uint32_t v)
+  {
+    fan_faces_.clear();
+    for(std::uint32_t q = m_.vertex_face_offsets[v]; q < m_.vertex_face_offsets[v + 1]; ++q)
+    {
+      const std::uint32_t g = m_.vertex_faces[q];
+      if(face_stamp_[g] == stamp_)
+        fan_faces_.push_back(g);
+    }
+    const std::size_t n = fan_faces_.size();
+    fan_root_.resize(n);
+    for(std::size_t a = 0; a < n; ++a)
+      fan_root_[a] = a;
+    std::size_t fans = n;
+    for(std::size_t a = 0; a < n; ++a)
+      for(std::size_t b = a + 1; b < n; ++b)
+        if(share_edge_at(fan_faces_[a], fan_faces_[b], v))
+        {
+          const std::size_t ra = fan_find(a), rb = fan_find(b);
+          if(ra != rb)
+          {
+            fan_root_[ra] = rb;
+            --fans;
+          }
+        }
+    return fans;
+  }
+
+  std::size_t fan_find(std::size_t a)
+  {
+    while(fan_root_[a] != a)
+      a = fan_root_[a] = fan_root_[fan_root_[a]];
+    return a;
+  }
+
   // Copies the selected faces into patch_, one vertex copy per fan of
   // selected faces around each mesh vertex; local face k is global_[k].
   bool build_patch()
@@ -253,33 +360,13 @@ private:
         if(vertex_stamp_[v] == stamp_)
           continue;
         vertex_stamp_[v] = stamp_;
-        // selected faces around v, and the corner of v in each
-        fan_faces_.clear();
-        for(std::uint32_t q = m_.vertex_face_offsets[v]; q < m_.vertex_face_offsets[v + 1]; ++q)
-        {
-          const std::uint32_t g = m_.vertex_faces[q];
-          if(face_stamp_[g] == stamp_)
-            fan_faces_.push_back(g);
-        }
-        // union-find on faces sharing an edge (v, w)
+        selected_fans(v);
         const std::size_t n = fan_faces_.size();
-        fan_root_.resize(n);
-        for(std::size_t a = 0; a < n; ++a)
-          fan_root_[a] = a;
-        auto find = [&](std::size_t a) {
-          while(fan_root_[a] != a)
-            a = fan_root_[a] = fan_root_[fan_root_[a]];
-          return a;
-        };
-        for(std::size_t a = 0; a < n; ++a)
-          for(std::size_t b = a + 1; b < n; ++b)
-            if(share_edge_at(fan_faces_[a], fan_faces_[b], v))
-              fan_root_[find(a)] = find(b);
         fan_vertex_.assign(n, vertex_descriptor());
         const Vec3& p = m_.points[v];
         for(std::size_t a = 0; a < n; ++a)
         {
-          const std::size_t r = find(a);
+          const std::size_t r = fan_find(a);
           if(fan_vertex_[r] == vertex_descriptor())
             fan_vertex_[r] = patch_.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
           const std::uint32_t g = fan_faces_[a];
@@ -418,7 +505,7 @@ private:
   unsigned int rings_;
   std::uint32_t stamp_ = 0;
   std::uint32_t source_ = no_face;
-  std::vector<std::uint32_t> face_stamp_, face_local_, vertex_stamp_;
+  std::vector<std::uint32_t> face_stamp_, face_local_, vertex_stamp_, tested_stamp_, bridge_stamp_;
   std::vector<std::uint32_t> global_; // local face -> mesh face
   std::vector<std::uint32_t> corner_; // local face corner -> patch vertex
   std::vector<std::uint32_t> fan_faces_;
