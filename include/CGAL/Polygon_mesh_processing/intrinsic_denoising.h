@@ -80,9 +80,20 @@ namespace Polygon_mesh_processing {
       \cgalParamDefault{`Intrinsic_path_strategy::SQUARE_PATTERN`}
     \cgalParamNEnd
     \cgalParamNBegin{use_step_length}
-      \cgalParamDescription{if `true`, each term of the path sums is multiplied by the step length \f$\|q_{x+1} - q_x\|\f$ between the centroids of consecutive path faces (eq. 4); eq. 8-9 set it to 1}
+      \cgalParamDescription{if `true`, each term of both sums of eq. 9 is multiplied by its step length \f$\|q_{x+1} - q_x\|\f$ (eq. 4), in units of \f$d\f$ (the mean distance between the centroids of edge-adjacent faces): the distance between the centroids of consecutive path faces, or, with `GEODESIC` paths, the length along the geodesic between the middles of its parts in consecutive faces (\f$c_i\f$ and \f$c_j\f$ at the ends); eq. 8-9 set it to 1}
       \cgalParamType{bool}
       \cgalParamDefault{`false`}
+    \cgalParamNEnd
+    \cgalParamNBegin{geodesic_patch_rings}
+      \cgalParamDescription{with `Intrinsic_path_strategy::GEODESIC`: the geodesics from \f$c_i\f$ are
+        computed on a copy of face \f$i\f$, its neighbourhood and this number of rings of faces (sharing a
+        vertex) around it, of which only the faces closer to \f$c_i\f$ than the farthest neighbour centroid
+        are kept (faces of zero area are left out); a neighbour no geodesic reaches inside that patch gets the
+        direct path
+        \f$\{i, j\}\f$. A geodesic through a vertex crosses only the faces its segments cross, not the
+        faces it touches at the vertex.}
+      \cgalParamType{unsigned int}
+      \cgalParamDefault{`1`}
     \cgalParamNEnd
     \cgalParamNBegin{include_self_weight}
       \cgalParamDescription{if `true`, \f$A_i n_i\f$ is added to the sum; eq. 8 read literally leaves it out}
@@ -172,7 +183,7 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
       \cgalParamType{unsigned int}
       \cgalParamDefault{`2`}
     \cgalParamNEnd
-    \cgalParamNBegin{sigma_spatial, sigma_range, spatial_exponent, range_exponent, neighbor_radius, relative_neighbor_radius, path_strategy, use_step_length, include_self_weight}
+    \cgalParamNBegin{sigma_spatial, sigma_range, spatial_exponent, range_exponent, neighbor_radius, relative_neighbor_radius, path_strategy, use_step_length, geodesic_patch_rings, include_self_weight}
       \cgalParamDescription{as for `intrinsic_filter_face_normals()`}
     \cgalParamNEnd
     \cgalParamNBegin{face_normal_map}

@@ -263,11 +263,11 @@ void intrinsic_average_pass(const Path_forest& paths, const Intrinsic_kernel& ke
       \cgalParamDefault{`1` each (L1)}
     \cgalParamNEnd
     \cgalParamNBegin{path_strategy}
-      \cgalParamDescription{`Intrinsic_path_strategy`: `SQUARE_PATTERN` (face signals only), `DIRECT` or `SHORTEST_GRAPH_PATH`}
+      \cgalParamDescription{`Intrinsic_path_strategy`: `SQUARE_PATTERN` or `GEODESIC` (face signals only), `DIRECT` or `SHORTEST_GRAPH_PATH`}
       \cgalParamDefault{`SQUARE_PATTERN` for a face signal, `SHORTEST_GRAPH_PATH` for a vertex signal}
     \cgalParamNEnd
     \cgalParamNBegin{use_step_length}
-      \cgalParamDescription{multiply each term of the sums by the distance between the positions (centroids or points) of consecutive path items (eq. 4)}
+      \cgalParamDescription{multiply each term of the sums by the distance between the positions (centroids or points) of consecutive path items (eq. 4), in units of the mean distance between adjacent items}
       \cgalParamType{bool}
       \cgalParamDefault{`false`}
     \cgalParamNEnd
@@ -337,8 +337,9 @@ void intrinsic_filter(const TriangleMesh& tmesh, const SignalMap& signal, Filter
                  double unit) {
     const double radius = D::read_radius(np, fname, unit);
     const D::Csr neighbors = D::geometric_neighborhoods<ConcurrencyTag>(positions, adjacency, radius);
-    const D::Path_forest paths = D::make_paths<ConcurrencyTag>(strategy, step_length, positions, adjacency, neighbors,
-                                               on_faces ? &m : nullptr, on_faces ? &fd : nullptr, fname);
+    const D::Path_forest paths = D::make_paths<ConcurrencyTag>(np, strategy, step_length, unit, positions, adjacency,
+                                                               neighbors, on_faces ? &m : nullptr,
+                                                               on_faces ? &fd : nullptr, fname);
     D::Flat_signal current = D::read_signal(keys, count, index, signal, fname, "signal"), next, phi_store, psi_store;
     const D::Flat_signal* phi_fixed = D::resolve_signal(
         choose_parameter(get_parameter(np, internal_np::spatial_signal), Intrinsic_signal::INPUT), phi_store, keys,

@@ -8,6 +8,7 @@
 #ifndef CGAL_PMP_INTERNAL_DENOISING_INTRINSIC_SETUP_H
 #define CGAL_PMP_INTERNAL_DENOISING_INTRINSIC_SETUP_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/geodesic_paths.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/graph_paths.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
@@ -92,30 +93,38 @@ double mean_adjacent_distance(const std::vector<Vec3>& positions, const Adjacenc
 }
 
 // The paths of `strategy` in the neighbourhoods `neighbors` of items at
-// `positions`. The square pattern needs the items to be the faces of `faces`
-// (with their data `fd`); it is refused for other items. With
-// `use_step_length`, the step lengths of eq. 4 are set from the positions.
-template <typename ConcurrencyTag, typename Adjacency>
-Path_forest make_paths(Intrinsic_path_strategy strategy, bool use_step_length, const std::vector<Vec3>& positions,
-                       const Adjacency& adjacent, const Csr& neighbors, const Flat_mesh* faces, const Face_data* fd,
-                       const char* fname)
+// `positions`. The square pattern and geodesic paths need the items to be the
+// faces of `faces` (with their data `fd`); they are refused for other items.
+// With `use_step_length`, the step lengths of eq. 4 are set, in units of
+// `unit` (the mean distance between adjacent items).
+template <typename ConcurrencyTag, typename NamedParameters, typename Adjacency>
+Path_forest make_paths(const NamedParameters& np, Intrinsic_path_strategy strategy, bool use_step_length, double unit,
+                       const std::vector<Vec3>& positions, const Adjacency& adjacent, const Csr& neighbors,
+                       const Flat_mesh* faces, const Face_data* fd, const char* fname)
 {
   Path_forest paths;
+  if((strategy == Intrinsic_path_strategy::SQUARE_PATTERN || strategy == Intrinsic_path_strategy::GEODESIC) &&
+     (faces == nullptr || fd == nullptr))
+    throw std::invalid_argument(std::string(fname) +
+                                ": square-pattern and geodesic paths are defined for face signals only; use DIRECT "
+                                "or SHORTEST_GRAPH_PATH for vertex signals.");
   switch(strategy)
   {
   case Intrinsic_path_strategy::DIRECT: paths = direct_paths(neighbors); break;
   case Intrinsic_path_strategy::SHORTEST_GRAPH_PATH: paths = shortest_graph_paths<ConcurrencyTag>(positions, adjacent, neighbors); break;
-  case Intrinsic_path_strategy::SQUARE_PATTERN:
-    if(faces == nullptr || fd == nullptr)
-      throw std::invalid_argument(std::string(fname) +
-                                  ": square-pattern paths are defined for face signals only; use DIRECT or "
-                                  "SHORTEST_GRAPH_PATH for vertex signals.");
-    paths = square_pattern_paths<ConcurrencyTag>(*faces, *fd, neighbors);
-    break;
+  case Intrinsic_path_strategy::SQUARE_PATTERN: paths = square_pattern_paths<ConcurrencyTag>(*faces, *fd, neighbors); break;
+  case Intrinsic_path_strategy::GEODESIC:
+  {
+    Geodesic_path_options go;
+    go.patch_rings = parameters::choose_parameter(parameters::get_parameter(np, internal_np::geodesic_patch_rings), 1u);
+    go.step_length = use_step_length;
+    go.length_unit = unit > 0. ? unit : 1.;
+    return geodesic_paths<ConcurrencyTag>(*faces, *fd, neighbors, go); // with its own step lengths
+  }
   default: throw std::invalid_argument(std::string(fname) + ": unknown path strategy.");
   }
   if(use_step_length)
-    set_step_lengths(paths, positions);
+    set_step_lengths(paths, positions, unit > 0. ? unit : 1.);
   return paths;
 }
 
@@ -153,10 +162,11 @@ Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParam
   const bool step_length = read_step_length(np);
   s.mesh = maps.flat(tmesh, fname);
   compute_face_data<ConcurrencyTag>(s.mesh, s.mesh.points, s.input_faces);
-  s.radius = read_radius(np, fname, mean_adjacent_centroid_distance(s.mesh, s.input_faces));
+  const double d = mean_adjacent_centroid_distance(s.mesh, s.input_faces);
+  s.radius = read_radius(np, fname, d);
   s.neighbors = geometric_neighborhoods<ConcurrencyTag>(s.mesh, s.input_faces.centroids, s.radius);
-  s.paths = make_paths<ConcurrencyTag>(strategy, step_length, s.input_faces.centroids, Face_vertex_adjacency{s.mesh}, s.neighbors,
-                       &s.mesh, &s.input_faces, fname);
+  s.paths = make_paths<ConcurrencyTag>(np, strategy, step_length, d, s.input_faces.centroids,
+                                       Face_vertex_adjacency{s.mesh}, s.neighbors, &s.mesh, &s.input_faces, fname);
   return s;
 }
 

@@ -35,7 +35,12 @@ enum class Intrinsic_path_strategy {
   /// through shared vertices, from centroid to centroid; vertices through
   /// edges), by Dijkstra: a cheap approximation of geodesic paths, and the
   /// paths of the geodesic and propagation filter presets.
-  SHORTEST_GRAPH_PATH
+  SHORTEST_GRAPH_PATH,
+  /// The paper's first formulation (section 3.2, figure 2): the path is the
+  /// exact geodesic from centroid `c_i` to centroid `c_j` (CGAL's
+  /// `Surface_mesh_shortest_path`, computed on a copy of the neighbourhood
+  /// patch), its nodes the faces the geodesic crosses, in order.
+  GEODESIC
 };
 
 /// \ingroup PMP_denoising_grp

@@ -29,3 +29,5 @@ CGAL_add_named_parameter(spatial_signal_t, spatial_signal, spatial_signal)
 CGAL_add_named_parameter(range_signal_t, range_signal, range_signal)
 // whether the general filter scales each result to unit length (normals)
 CGAL_add_named_parameter(unit_length_result_t, unit_length_result, unit_length_result)
+// GEODESIC paths: rings of faces added around the neighbourhood patch
+CGAL_add_named_parameter(geodesic_patch_rings_t, geodesic_patch_rings, geodesic_patch_rings)

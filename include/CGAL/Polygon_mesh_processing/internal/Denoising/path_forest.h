@@ -83,8 +83,8 @@ inline Path_forest direct_paths(const Csr& neighbors)
 }
 
 // Step lengths of eq. 4: the distance between the positions of each node and
-// of its parent (item i for a root child).
-inline void set_step_lengths(Path_forest& forest, const std::vector<Vec3>& positions)
+// of its parent (item i for a root child), divided by `unit`.
+inline void set_step_lengths(Path_forest& forest, const std::vector<Vec3>& positions, double unit)
 {
   forest.step.resize(forest.face.size());
   for(std::size_t i = 0; i < forest.number_of_faces(); ++i)
@@ -92,7 +92,7 @@ inline void set_step_lengths(Path_forest& forest, const std::vector<Vec3>& posit
     {
       const std::int32_t p = forest.parent[k];
       const std::size_t from = p == Path_forest::root ? i : forest.face[forest.offsets[i] + p];
-      forest.step[k] = norm(positions[forest.face[k]] - positions[from]);
+      forest.step[k] = norm(positions[forest.face[k]] - positions[from]) / unit;
     }
 }
 

@@ -1,0 +1,683 @@
+// Copyright (c) 2026 The intrinsic denoising package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The paper's first formulation (section 3.2, eqs. 4 and 8-9 along "the
+// geodesic path between p and q"): the path from face i to a neighbour j is
+// the exact geodesic from centroid c_i to centroid c_j, computed with CGAL's
+// Surface_mesh_shortest_path on a small copy of face i's neighbourhood patch.
+// Its nodes are the faces the geodesic crosses, in order from i to j; the
+// paths of one face are merged into a prefix tree (a Path_forest tree).
+
+#ifndef CGAL_PMP_INTERNAL_DENOISING_GEODESIC_PATHS_H
+#define CGAL_PMP_INTERNAL_DENOISING_GEODESIC_PATHS_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/parallel.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/square_pattern_paths.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_shortest_path.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Denoising {
+
+// Options of the geodesic strategy.
+struct Geodesic_path_options
+{
+  // Rings of faces (sharing a vertex) added around the neighbourhood to form
+  // the patch the geodesics are computed on, so that a geodesic between two
+  // neighbours may pass through faces whose centroid lies just outside the
+  // radius; only faces that come within the distance of the farthest
+  // neighbour centroid are added. 0: the neighbourhood and face i only.
+  unsigned int patch_rings = 1;
+  // Fill Path_forest::step with geodesic step lengths (eq. 4), divided by
+  // `length_unit`; otherwise leave it empty (unit steps, eq. 8).
+  bool step_length = false;
+  double length_unit = 1.;
+};
+
+// Counts of what happened while building the paths (for tests and reports).
+struct Geodesic_path_statistics
+{
+  std::size_t paths = 0;            // neighbour paths built (one per neighbour)
+  std::size_t fallbacks = 0;        // of which direct i -> j (no geodesic found in the patch)
+  std::size_t vertex_passages = 0;  // geodesics through a vertex of the patch (pseudo-sources)
+  std::size_t failed_patches = 0;   // faces whose patch could not be built (all paths direct)
+
+  void add(const Geodesic_path_statistics& o)
+  {
+    paths += o.paths;
+    fallbacks += o.fallbacks;
+    vertex_passages += o.vertex_passages;
+    failed_patches += o.failed_patches;
+  }
+};
+
+// One geodesic path from c_i to c_j, in order from i to j.
+// - faces: the faces whose interior the geodesic crosses (over a length
+//   above a relative 1e-9 of the whole path), starting with i, ending with j;
+//   consecutive faces are different.
+// - lengths: for each face, the length of the geodesic inside it.
+// - points: the polyline c_i, the points where it crosses an edge or passes
+//   through a vertex (each point once), c_j.
+struct Geodesic_path
+{
+  std::vector<std::uint32_t> faces;
+  std::vector<double> lengths;
+  std::vector<Vec3> points;
+  std::size_t vertex_passages = 0;
+  double length() const
+  {
+    double s = 0.;
+    for(double l : lengths)
+      s += l;
+    return s;
+  }
+};
+
+// Squared distance from p to the triangle (a, b, c) (closest point by the
+// Voronoi regions of the vertices, edges and interior).
+inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if(d1 <= 0. && d2 <= 0.)
+    return squared_norm(ap);
+  const Vec3 bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if(d3 >= 0. && d4 <= d3)
+    return squared_norm(bp);
+  const double vc = d1 * d4 - d3 * d2;
+  if(vc <= 0. && d1 >= 0. && d3 <= 0.)
+    return squared_norm(ap - (d1 / (d1 - d3)) * ab);
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if(d6 >= 0. && d5 <= d6)
+    return squared_norm(cp);
+  const double vb = d5 * d2 - d1 * d6;
+  if(vb <= 0. && d2 >= 0. && d6 <= 0.)
+    return squared_norm(ap - (d2 / (d2 - d6)) * ac);
+  const double va = d3 * d6 - d5 * d4;
+  if(va <= 0. && (d4 - d3) >= 0. && (d5 - d6) >= 0.)
+    return squared_norm(bp - ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b));
+  const double denom = va + vb + vc;
+  if(!(denom > 0.)) // degenerate triangle: nearest of its vertices
+    return (std::min)({squared_norm(ap), squared_norm(bp), squared_norm(cp)});
+  const double v = vb / denom, w = vc / denom;
+  return squared_norm(ap - v * ab - w * ac);
+}
+
+// Geodesics from the centroid of one face to the centroids of its neighbours,
+// inside a patch of the mesh. Holds the scratch memory of one thread: make one
+// per thread and call set_source() then path_to() for each face.
+//
+// The patch is a CGAL::Surface_mesh copy of face i, its neighbours and
+// `patch_rings` rings of faces around them (only the faces that come within
+// R_i of c_i, R_i the distance to the farthest neighbour centroid), plus the
+// faces around each vertex where selected faces meet only at that vertex (the
+// neighbourhood grows through shared vertices), without the faces of zero area
+// (zero normal in Face_data). Faces of the mesh that only share a vertex
+// inside the patch are kept apart in the copy (the vertex is duplicated per
+// fan of faces connected through edges), so the copy is always a manifold:
+// a geodesic cannot go from one fan to another through such a vertex.
+class Geodesic_patch_solver
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+  typedef CGAL::Surface_mesh<Kernel::Point_3> Patch;
+  typedef CGAL::Surface_mesh_shortest_path_traits<Kernel, Patch> Traits;
+  typedef CGAL::Surface_mesh_shortest_path<Traits> Shortest_path;
+  typedef Patch::Vertex_index vertex_descriptor;
+  typedef Patch::Halfedge_index halfedge_descriptor;
+  typedef Patch::Face_index face_descriptor;
+  typedef Traits::Barycentric_coordinates Barycentric_coordinates;
+
+  // One event of CGAL's path sequence (visited from the query back to the source).
+  struct Event
+  {
+    enum Kind { FACE, EDGE, VERTEX } kind;
+    std::uint32_t near_face, far_face; // EDGE: faces on the source side and on the query side
+    Vec3 point;
+  };
+
+  struct Visitor
+  {
+    const Geodesic_patch_solver* solver;
+    std::vector<Event>* events;
+    void operator()(halfedge_descriptor h, Kernel::FT t)
+    {
+      const Patch& p = solver->patch_;
+      const Vec3 a = solver->to_vec(p.point(p.source(h))), b = solver->to_vec(p.point(p.target(h)));
+      // t weighs the target of h (see Surface_mesh_shortest_path::point())
+      const double s = CGAL::to_double(t);
+      const face_descriptor fo = p.face(p.opposite(h));
+      events->push_back({Event::EDGE, fo == Patch::null_face() ? no_face : solver->global_[std::size_t(fo)],
+                         solver->global_[std::size_t(p.face(h))], (1. - s) * a + s * b});
+    }
+    void operator()(vertex_descriptor v)
+    {
+      events->push_back({Event::VERTEX, no_face, no_face, solver->to_vec(solver->patch_.point(v))});
+    }
+    void operator()(face_descriptor f, const Barycentric_coordinates& l)
+    {
+      const Patch& p = solver->patch_;
+      const halfedge_descriptor h = p.halfedge(f);
+      const Vec3 a = solver->to_vec(p.point(p.source(h))), b = solver->to_vec(p.point(p.target(h))),
+                 c = solver->to_vec(p.point(p.target(p.next(h))));
+      const std::uint32_t g = solver->global_[std::size_t(f)];
+      // the barycentric coordinates of face f refer to its vertices in the
+      // order source(halfedge(f)), target(halfedge(f)), target(next(...))
+      events->push_back({Event::FACE, g, g,
+                         CGAL::to_double(l[0]) * a + CGAL::to_double(l[1]) * b + CGAL::to_double(l[2]) * c});
+    }
+  };
+
+public:
+  static constexpr std::uint32_t no_face = std::uint32_t(-1);
+
+  Geodesic_patch_solver(const Flat_mesh& m, const Face_data& fd, unsigned int patch_rings)
+    : m_(m), fd_(fd), rings_(patch_rings), face_stamp_(m.number_of_faces(), no_face),
+      face_local_(m.number_of_faces(), 0), vertex_stamp_(m.number_of_vertices(), no_face),
+      tested_stamp_(m.number_of_faces(), no_face), bridge_stamp_(m.number_of_vertices(), no_face)
+  {}
+
+  // Builds the patch of face i with the given neighbours and the shortest-path
+  // structure rooted at c_i. Returns false (every path_to() then fails) if
+  // face i has zero area or the patch could not be built.
+  template <typename NeighborIterator>
+  bool set_source(std::uint32_t i, NeighborIterator nb, NeighborIterator ne)
+  {
+    source_ = i;
+    shortest_path_.reset();
+    patch_.clear();
+    global_.clear();
+    ++stamp_;
+    if(stamp_ == no_face) // wrapped around: reset the stamps
+    {
+      std::fill(face_stamp_.begin(), face_stamp_.end(), no_face);
+      std::fill(vertex_stamp_.begin(), vertex_stamp_.end(), no_face);
+      std::fill(tested_stamp_.begin(), tested_stamp_.end(), no_face);
+      std::fill(bridge_stamp_.begin(), bridge_stamp_.end(), no_face);
+      stamp_ = 0;
+    }
+    if(is_degenerate(i))
+      return false;
+    select(i);
+    const Vec3& ci = fd_.centroids[i];
+    double reach2 = 0.; // squared distance to the farthest neighbour centroid
+    for(NeighborIterator it = nb; it != ne; ++it)
+    {
+      select(*it);
+      reach2 = (std::max)(reach2, squared_norm(fd_.centroids[*it] - ci));
+    }
+    // where selected faces meet at a vertex only (the neighbourhood grows
+    // through shared vertices), the faces around that vertex are added, so
+    // that the patch is connected through edges wherever the neighbourhood is
+    const std::size_t selected = global_.size();
+    for(std::size_t k = 0; k < selected; ++k)
+      for(std::uint32_t v : m_.triangles[global_[k]])
+      {
+        if(bridge_stamp_[v] == stamp_)
+          continue;
+        bridge_stamp_[v] = stamp_;
+        if(selected_fans(v) > 1)
+          for(std::uint32_t q = m_.vertex_face_offsets[v]; q < m_.vertex_face_offsets[v + 1]; ++q)
+            select(m_.vertex_faces[q]);
+      }
+    // rings: faces sharing a vertex with the patch that come within that
+    // distance of c_i (any face a straight segment from c_i to a neighbour's
+    // centroid crosses does)
+    std::size_t ring_begin = 0;
+    for(unsigned int r = 0; r < rings_; ++r)
+    {
+      const std::size_t ring_end = global_.size();
+      for(std::size_t k = ring_begin; k < ring_end; ++k)
+        for(std::uint32_t v : m_.triangles[global_[k]])
+          for(std::uint32_t q = m_.vertex_face_offsets[v]; q < m_.vertex_face_offsets[v + 1]; ++q)
+          {
+            const std::uint32_t g = m_.vertex_faces[q];
+            if(tested_stamp_[g] == stamp_)
+              continue;
+            tested_stamp_[g] = stamp_;
+            const auto& t = m_.triangles[g];
+            if(squared_distance_to_triangle(ci, m_.points[t[0]], m_.points[t[1]], m_.points[t[2]]) <= reach2)
+              select(g);
+          }
+      ring_begin = ring_end;
+    }
+    if(!build_patch())
+    {
+      patch_.clear();
+      global_.clear();
+      return false;
+    }
+    shortest_path_.reset(new Shortest_path(patch_));
+    shortest_path_->add_source_point(face_descriptor(0), centroid_location());
+    shortest_path_->build_sequence_tree();
+    return true;
+  }
+
+  // The geodesic from c_i to c_j inside the patch. Returns false if j is not
+  // in the patch or not reachable from c_i inside it.
+  bool path_to(std::uint32_t j, Geodesic_path& out)
+  {
+    out.faces.clear();
+    out.lengths.clear();
+    out.points.clear();
+    out.vertex_passages = 0;
+    if(!shortest_path_ || j >= face_stamp_.size() || face_stamp_[j] != stamp_ || j == source_)
+      return false;
+    events_.clear();
+    Visitor visitor{this, &events_};
+    const auto result =
+        shortest_path_->shortest_path_sequence_to_source_points(face_descriptor(face_local_[j]), centroid_location(),
+                                                                visitor);
+    const double distance = CGAL::to_double(result.first);
+    if(!(distance >= 0.) || !std::isfinite(distance) || events_.size() < 2 || events_.front().kind != Event::FACE ||
+       events_.back().kind != Event::FACE || events_.back().far_face != source_)
+      return false;
+    return trace(j, out);
+  }
+
+private:
+  bool is_degenerate(std::uint32_t f) const { return squared_norm(fd_.normals[f]) == 0.; }
+
+  static Barycentric_coordinates centroid_location()
+  {
+    return {{Kernel::FT(1. / 3.), Kernel::FT(1. / 3.), Kernel::FT(1. / 3.)}};
+  }
+
+  Vec3 to_vec(const Kernel::Point_3& p) const { return {p.x(), p.y(), p.z()}; }
+
+  void select(std::uint32_t f)
+  {
+    if(face_stamp_[f] == stamp_ || is_degenerate(f))
+      return;
+    face_stamp_[f] = stamp_;
+    face_local_[f] = std::uint32_t(global_.size());
+    global_.push_back(f);
+  }
+
+  // Groups the selected faces around v (in fan_faces_) into fans of faces
+  // connected through edges (v, w) (fan_find() gives a fan's representative);
+  // returns the number of fans.
+  std::size_t selected_fans(std::uint32_t v)
+  {
+    fan_faces_.clear();
+    for(std::uint32_t q = m_.vertex_face_offsets[v]; q < m_.vertex_face_offsets[v + 1]; ++q)
+    {
+      const std::uint32_t g = m_.vertex_faces[q];
+      if(face_stamp_[g] == stamp_)
+        fan_faces_.push_back(g);
+    }
+    const std::size_t n = fan_faces_.size();
+    fan_root_.resize(n);
+    for(std::size_t a = 0; a < n; ++a)
+      fan_root_[a] = a;
+    std::size_t fans = n;
+    for(std::size_t a = 0; a < n; ++a)
+      for(std::size_t b = a + 1; b < n; ++b)
+        if(share_edge_at(fan_faces_[a], fan_faces_[b], v))
+        {
+          const std::size_t ra = fan_find(a), rb = fan_find(b);
+          if(ra != rb)
+          {
+            fan_root_[ra] = rb;
+            --fans;
+          }
+        }
+    return fans;
+  }
+
+  std::size_t fan_find(std::size_t a)
+  {
+    while(fan_root_[a] != a)
+      a = fan_root_[a] = fan_root_[fan_root_[a]];
+    return a;
+  }
+
+  // Copies the selected faces into patch_, one vertex copy per fan of
+  // selected faces around each mesh vertex; local face k is global_[k].
+  bool build_patch()
+  {
+    const std::size_t nf = global_.size();
+    corner_.assign(3 * nf, 0);
+    patch_.reserve(Patch::size_type(3 * nf), Patch::size_type(3 * nf), Patch::size_type(nf));
+    for(std::size_t k = 0; k < nf; ++k)
+      for(int c = 0; c < 3; ++c)
+      {
+        const std::uint32_t v = m_.triangles[global_[k]][c];
+        if(vertex_stamp_[v] == stamp_)
+          continue;
+        vertex_stamp_[v] = stamp_;
+        selected_fans(v);
+        const std::size_t n = fan_faces_.size();
+        fan_vertex_.assign(n, vertex_descriptor());
+        const Vec3& p = m_.points[v];
+        for(std::size_t a = 0; a < n; ++a)
+        {
+          const std::size_t r = fan_find(a);
+          if(fan_vertex_[r] == vertex_descriptor())
+            fan_vertex_[r] = patch_.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
+          const std::uint32_t g = fan_faces_[a];
+          const auto& t = m_.triangles[g];
+          const int cg = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+          corner_[3 * face_local_[g] + cg] = std::uint32_t(fan_vertex_[r]);
+        }
+      }
+    for(std::size_t k = 0; k < nf; ++k)
+    {
+      const face_descriptor f =
+          patch_.add_face(vertex_descriptor(corner_[3 * k]), vertex_descriptor(corner_[3 * k + 1]),
+                          vertex_descriptor(corner_[3 * k + 2]));
+      if(f == Patch::null_face() || std::size_t(f) != k)
+        return false;
+    }
+    return true;
+  }
+
+  bool share_edge_at(std::uint32_t f, std::uint32_t g, std::uint32_t v) const
+  {
+    const auto& a = m_.triangles[f];
+    const auto& b = m_.triangles[g];
+    for(std::uint32_t x : a)
+      if(x != v && (b[0] == x || b[1] == x || b[2] == x))
+        return true;
+    return false;
+  }
+
+  // Turns the events (from c_j back to c_i) into faces crossed, lengths and
+  // points, from i to j. The geodesic's segment between two consecutive
+  // events lies in one face: before an edge crossing (towards c_j) in the
+  // face on the query side, after it in the face on the source side. At a
+  // vertex, the faces around it are not crossed; the path goes on in the
+  // face of the next edge crossing (or face i).
+  bool trace(std::uint32_t j, Geodesic_path& out)
+  {
+    portions_.clear();
+    out.points.clear();
+    std::uint32_t current = events_.front().far_face; // face j
+    double run = 0.;
+    Vec3 last = events_.front().point;
+    out.points.push_back(last);
+    auto close = [&]() {
+      if(current != no_face)
+        portions_.emplace_back(current, run);
+      run = 0.;
+    };
+    for(std::size_t k = 1; k < events_.size(); ++k)
+    {
+      const Event& e = events_[k];
+      if(e.kind == Event::EDGE)
+      {
+        if(current != e.far_face)
+        {
+          close();
+          current = e.far_face;
+        }
+        run += norm(e.point - last);
+        close();
+        current = e.near_face;
+      }
+      else if(e.kind == Event::VERTEX)
+      {
+        run += norm(e.point - last);
+        close();
+        current = no_face;
+        ++out.vertex_passages;
+      }
+      else // FACE: the source, last event
+      {
+        if(current != e.far_face)
+        {
+          close();
+          current = e.far_face;
+        }
+        run += norm(e.point - last);
+        close();
+      }
+      last = e.point;
+      out.points.push_back(last);
+    }
+    std::reverse(out.points.begin(), out.points.end());
+    double total = 0.;
+    for(const auto& p : portions_)
+      total += p.second;
+    if(!std::isfinite(total))
+      return false;
+    // points met twice (a crossing exactly at a vertex is reported once per
+    // edge around it) are kept once
+    const double touched = 1e-9 * total;
+    std::size_t kept = 1;
+    for(std::size_t k = 1; k < out.points.size(); ++k)
+      if(norm(out.points[k] - out.points[kept - 1]) > touched || k + 1 == out.points.size())
+        out.points[kept++] = out.points[k];
+    out.points.resize(kept);
+    // from i to j: drop the faces only touched (at a vertex or an edge end),
+    // merge repeats, and make sure the path runs from i to j
+    for(std::size_t k = portions_.size(); k-- > 0;)
+    {
+      const auto& p = portions_[k];
+      const bool end = k == 0 || k + 1 == portions_.size();
+      if(!end && !(p.second > touched))
+        continue;
+      if(!out.faces.empty() && out.faces.back() == p.first)
+        out.lengths.back() += p.second;
+      else
+      {
+        out.faces.push_back(p.first);
+        out.lengths.push_back(p.second);
+      }
+    }
+    if(out.faces.empty() || out.faces.front() != source_)
+    {
+      out.faces.insert(out.faces.begin(), source_);
+      out.lengths.insert(out.lengths.begin(), 0.);
+    }
+    // the path ends at the first time it reaches j
+    const auto first_j = std::find(out.faces.begin() + 1, out.faces.end(), j);
+    if(first_j == out.faces.end())
+    {
+      out.faces.push_back(j);
+      out.lengths.push_back(0.);
+    }
+    else
+    {
+      const std::size_t n = std::size_t(first_j - out.faces.begin()) + 1;
+      out.faces.resize(n);
+      out.lengths.resize(n);
+    }
+    return true;
+  }
+
+  const Flat_mesh& m_;
+  const Face_data& fd_;
+  unsigned int rings_;
+  std::uint32_t stamp_ = 0;
+  std::uint32_t source_ = no_face;
+  std::vector<std::uint32_t> face_stamp_, face_local_, vertex_stamp_, tested_stamp_, bridge_stamp_;
+  std::vector<std::uint32_t> global_; // local face -> mesh face
+  std::vector<std::uint32_t> corner_; // local face corner -> patch vertex
+  std::vector<std::uint32_t> fan_faces_;
+  std::vector<std::size_t> fan_root_;
+  std::vector<vertex_descriptor> fan_vertex_;
+  std::vector<Event> events_;
+  std::vector<std::pair<std::uint32_t, double>> portions_;
+  Patch patch_;
+  std::unique_ptr<Shortest_path> shortest_path_;
+};
+
+// Step lengths along a geodesic path (eq. 4). Each face x of the path is
+// represented by the point q_x of the geodesic at the middle (by length) of
+// the part of the geodesic inside x; q_i = c_i and q_j = c_j. The step of the
+// node of face path.faces[k] is the length of the geodesic from q of the
+// previous face to q of this one, so the steps of a path sum to its length.
+inline double geodesic_step(const Geodesic_path& path, std::size_t k)
+{
+  const std::size_t last = path.faces.size() - 1;
+  const double before = k - 1 == 0 ? path.lengths[0] : 0.5 * path.lengths[k - 1];
+  const double after = k == last ? path.lengths[k] : 0.5 * path.lengths[k];
+  return before + after;
+}
+
+// Builds the geodesic path forest. For each face i, the neighbours are
+// reached by geodesics inside i's patch (see Geodesic_patch_solver), taken by
+// increasing geodesic length, and inserted into a prefix tree: a node per
+// distinct prefix (sequence of faces from i), so shared prefixes are shared
+// nodes. The node at the end of neighbour j's path is weighted; the nodes a
+// path only passes through are not (`weighted` = 0), even when their face is
+// a neighbour too (that neighbour has its own weighted node at the end of its
+// own path). Each neighbour is thus weighted exactly once.
+//
+// Fallback: a neighbour that no geodesic reaches inside the patch (another
+// component of the patch, a face of zero area, or a face i of zero area or
+// whose patch could not be built) gets the direct path i -> j, as in the
+// DIRECT strategy, with the Euclidean distance |c_j - c_i| as its step.
+//
+// With options.step_length, `step` holds geodesic_step() / length_unit of
+// the path that created the node (the shortest path through that prefix).
+template <typename ConcurrencyTag>
+Path_forest geodesic_paths(const Flat_mesh& m, const Face_data& fd, const Csr& neighbors,
+                           const Geodesic_path_options& options = Geodesic_path_options(),
+                           Geodesic_path_statistics* statistics = nullptr)
+{
+  const std::size_t nf = m.number_of_faces();
+  struct Chunk
+  {
+    std::vector<std::uint32_t> face;
+    std::vector<std::int32_t> parent;
+    std::vector<char> weighted;
+    std::vector<double> step;
+    Geodesic_path_statistics statistics;
+  };
+  const std::size_t chunk_size = 32;
+  const std::size_t nchunks = (nf + chunk_size - 1) / chunk_size;
+  std::vector<Chunk> chunks(nchunks);
+  std::vector<std::uint32_t> counts(nf, 0);
+  const double unit = options.length_unit > 0. ? options.length_unit : 1.;
+
+  for_each_chunk<ConcurrencyTag>(
+      nchunks,
+      [&](std::size_t cb, std::size_t ce) {
+        Geodesic_patch_solver solver(m, fd, options.patch_rings);
+        std::vector<Geodesic_path> paths;
+        std::vector<char> reached;
+        std::vector<std::pair<double, std::size_t>> order;
+        std::vector<std::int32_t> first_child, next_sibling;
+        for(std::size_t c = cb; c < ce; ++c)
+        {
+          Chunk& chunk = chunks[c];
+          const std::size_t last = (std::min)(nf, (c + 1) * chunk_size);
+          for(std::size_t i = c * chunk_size; i < last; ++i)
+          {
+            const std::uint32_t nb = neighbors.begin(i), ne = neighbors.end(i);
+            const std::size_t n = ne - nb;
+            const std::size_t start = chunk.face.size();
+            const bool patch_ok =
+                solver.set_source(std::uint32_t(i), neighbors.items.begin() + nb, neighbors.items.begin() + ne);
+            if(!patch_ok && n > 0)
+              ++chunk.statistics.failed_patches;
+            if(paths.size() < n)
+              paths.resize(n);
+            reached.assign(n, 0);
+            order.clear();
+            for(std::size_t k = 0; k < n; ++k)
+            {
+              const std::uint32_t j = neighbors.items[nb + k];
+              reached[k] = patch_ok && solver.path_to(j, paths[k]) ? 1 : 0;
+              const double len = reached[k] ? paths[k].length() : norm(fd.centroids[j] - fd.centroids[i]);
+              order.emplace_back(len, k);
+              ++chunk.statistics.paths;
+              if(!reached[k])
+                ++chunk.statistics.fallbacks;
+              else if(paths[k].vertex_passages > 0)
+                ++chunk.statistics.vertex_passages;
+            }
+            std::sort(order.begin(), order.end());
+            first_child.clear();
+            next_sibling.clear();
+            std::int32_t root_first_child = -1;
+            // adds (or finds) the child of `parent` (local index or root) with face f
+            auto child = [&](std::int32_t parent, std::uint32_t f, double step, bool& created) {
+              std::int32_t k = parent == Path_forest::root ? root_first_child : first_child[parent];
+              for(; k != -1; k = next_sibling[k])
+                if(chunk.face[start + k] == f)
+                {
+                  created = false;
+                  return k;
+                }
+              created = true;
+              const std::int32_t id = std::int32_t(chunk.face.size() - start);
+              chunk.face.push_back(f);
+              chunk.parent.push_back(parent);
+              chunk.weighted.push_back(0);
+              chunk.step.push_back(step);
+              first_child.push_back(-1);
+              std::int32_t& head = parent == Path_forest::root ? root_first_child : first_child[parent];
+              next_sibling.push_back(head);
+              head = id;
+              return id;
+            };
+            for(const auto& o : order)
+            {
+              const std::size_t k = o.second;
+              const std::uint32_t j = neighbors.items[nb + k];
+              bool created = false;
+              std::int32_t node = Path_forest::root;
+              if(reached[k])
+              {
+                const Geodesic_path& p = paths[k];
+                for(std::size_t x = 1; x < p.faces.size(); ++x)
+                  node = child(node, p.faces[x], geodesic_step(p, x) / unit, created);
+              }
+              else
+                node = child(Path_forest::root, j, o.first / unit, created);
+              chunk.weighted[start + node] = 1;
+            }
+            counts[i] = std::uint32_t(chunk.face.size() - start);
+          }
+        }
+      },
+      1);
+
+  Path_forest forest;
+  forest.offsets.assign(nf + 1, 0);
+  for(std::size_t f = 0; f < nf; ++f)
+    forest.offsets[f + 1] = forest.offsets[f] + counts[f];
+  const std::size_t total = forest.offsets[nf];
+  forest.face.reserve(total);
+  forest.parent.reserve(total);
+  forest.weighted.reserve(total);
+  if(options.step_length)
+    forest.step.reserve(total);
+  Geodesic_path_statistics stats;
+  for(const Chunk& c : chunks)
+  {
+    forest.face.insert(forest.face.end(), c.face.begin(), c.face.end());
+    forest.parent.insert(forest.parent.end(), c.parent.begin(), c.parent.end());
+    forest.weighted.insert(forest.weighted.end(), c.weighted.begin(), c.weighted.end());
+    if(options.step_length)
+      forest.step.insert(forest.step.end(), c.step.begin(), c.step.end());
+    stats.add(c.statistics);
+  }
+  if(statistics)
+    *statistics = stats;
+  return forest;
+}
+
+} // namespace Denoising
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif
