@@ -22,3 +22,6 @@ CGAL_add_named_parameter(relative_neighbor_radius_t, relative_neighbor_radius, r
 CGAL_add_named_parameter(include_self_weight_t, include_self_weight, include_self_weight)
 // how the path from face i to neighbour j is chosen (Intrinsic_path_strategy)
 CGAL_add_named_parameter(path_strategy_t, path_strategy, path_strategy)
+// whether the vertex update (eq. 10) is restricted so that no face folds
+// (default true; false reproduces the paper's update exactly)
+CGAL_add_named_parameter(prevent_folds_t, prevent_folds, prevent_folds)
