@@ -26,6 +26,7 @@
 #include <filesystem>
 #include <fstream>
 #include <istream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -94,15 +95,13 @@ inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh
       double nx, ny, nz;
       scanner.scan_normal(nx, ny, nz);
     }
-    if(scanner.has_vcolors())
+    if(scanner.has_vcolors() || scanner.has_textures())
     {
-      unsigned char r = 0, g = 0, b = 0;
-      scanner.scan_color(r, g, b);
-    }
-    if(scanner.has_textures())
-    {
-      double u, v;
-      scanner.scan_texture(u, v);
+      // colours are not used; CGAL's scan_color() converts doubles to
+      // unsigned char unchecked (undefined behaviour; found by the fuzzer)
+      if(scanner.binary())
+        return "binary OFF with vertex colours or textures is not supported";
+      scanner.skip_to_next_vertex(i);
     }
     if(!in.good())
       return "truncated or malformed vertex " + std::to_string(i);
@@ -118,31 +117,58 @@ inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh
   }
   for(std::size_t i = 0; i < nf; ++i)
   {
-    std::size_t no = std::size_t(-1);
-    scanner.scan_facet(no, i);
-    if((!in.eof() && !in.good()) || no == std::size_t(-1))
-      return "truncated or malformed face " + std::to_string(i);
-    if(no < 3 || no > nv)
-      return "face " + std::to_string(i) + " has " + std::to_string(no) + " vertices";
-    std::vector<std::size_t> polygon(no);
-    for(std::size_t j = 0; j < no; ++j)
+    std::vector<std::size_t> polygon;
+    if(scanner.binary())
     {
-      std::size_t id = nv;
-      scanner.scan_facet_vertex_index(id, j + 1, i);
-      if(!in || id >= nv)
-        return "face " + std::to_string(i) + " has a vertex index out of range";
-      polygon[j] = id;
+      // 32-bit integers: no conversion issue
+      std::size_t no = std::size_t(-1);
+      scanner.scan_facet(no, i);
+      if((!in.eof() && !in.good()) || no < 3 || no > nv)
+        return "truncated or malformed face " + std::to_string(i);
+      polygon.resize(no);
+      for(std::size_t j = 0; j < no; ++j)
+      {
+        std::size_t id = nv;
+        scanner.scan_facet_vertex_index(id, j + 1, i);
+        if(!in || id >= nv)
+          return "face " + std::to_string(i) + " has a vertex index out of range";
+        polygon[j] = id;
+      }
+      scanner.skip_to_next_facet(i);
     }
-    for(std::size_t j = 0; j < no; ++j)
-      for(std::size_t k = j + 1; k < no; ++k)
+    else
+    {
+      // Text: parsed here, because CGAL's scanner converts the numbers of the
+      // line, read as doubles, to size_t unchecked (undefined behaviour for a
+      // negative or huge value; found by the fuzzer).
+      CGAL::skip_comment_OFF(in);
+      std::string line;
+      if(!std::getline(in, line))
+        return "truncated face " + std::to_string(i);
+      line = line.substr(0, line.find('#'));
+      std::istringstream words(line);
+      std::vector<double> entries;
+      double d;
+      while(words >> CGAL::IO::iformat(d))
+        entries.push_back(d);
+      auto is_index = [](double x, std::size_t bound) {
+        return x >= 0. && x < double(bound) && x == std::floor(x);
+      };
+      if(entries.empty() || !is_index(entries[0], nv + 1) || entries[0] < 3. ||
+         entries.size() < 1 + std::size_t(entries[0]))
+        return "malformed face " + std::to_string(i);
+      polygon.resize(std::size_t(entries[0]));
+      for(std::size_t j = 0; j < polygon.size(); ++j)
+      {
+        if(!is_index(entries[j + 1], nv))
+          return "face " + std::to_string(i) + " has a vertex index out of range";
+        polygon[j] = std::size_t(entries[j + 1]);
+      }
+    }
+    for(std::size_t j = 0; j < polygon.size(); ++j)
+      for(std::size_t k = j + 1; k < polygon.size(); ++k)
         if(polygon[j] == polygon[k])
           return "face " + std::to_string(i) + " uses a vertex twice";
-    if(scanner.has_fcolors())
-    {
-      unsigned char r = 0, g = 0, b = 0;
-      scanner.scan_color(r, g, b);
-    }
-    scanner.skip_to_next_facet(i);
     polygons.push_back(std::move(polygon));
   }
   if(!in && !in.eof())
