@@ -5,50 +5,28 @@
 //   Without arguments: CGAL's fandisk with seeded Gaussian noise
 //   (sigma_E = 0.3, seed 1) is written to ./fandisk_noisy.off and denoised,
 //   with fandisk itself as the reference.
-// The result is written next to the input, as <input stem>_denoised.off.
+// The result is written next to the input, as <input stem>_denoised.off,
+// through a temporary file and a rename (never over the input).
+// An unreadable, truncated or malformed file, a mesh that is not a triangle
+// mesh or has non-finite coordinates: one line on stderr and exit code 1.
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
+#include "denoise_mesh_file.h"
 
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
-#include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
-
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <chrono>
-#include <cstdio>
 #include <iostream>
 #include <string>
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef denoise_file::Mesh Mesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-static bool read_mesh(const std::string& path, Mesh& mesh)
+// One line on std::cerr, exit code 1.
+static int fail(const std::string& message)
 {
-  if(!CGAL::IO::read_polygon_mesh(path, mesh) || mesh.is_empty())
-  {
-    std::cerr << "error: cannot read a non-empty polygon mesh from '" << path << "'\n";
-    return false;
-  }
-  return true;
-}
-
-// Writes to a temporary file first, so no half-written output is ever left.
-static bool write_mesh(const std::string& path, const Mesh& mesh)
-{
-  // keep the extension last: it selects the file format
-  const std::size_t dot = path.find_last_of('.');
-  const std::string tmp = path + ".tmp" + (dot == std::string::npos ? std::string(".off") : path.substr(dot));
-  if(!CGAL::IO::write_polygon_mesh(tmp, mesh, CGAL::parameters::stream_precision(17)) ||
-     std::rename(tmp.c_str(), path.c_str()) != 0)
-  {
-    std::remove(tmp.c_str());
-    std::cerr << "error: cannot write '" << path << "'\n";
-    return false;
-  }
-  return true;
+  std::cerr << "error: " << message << "\n";
+  return 1;
 }
 
 int main(int argc, char** argv)
@@ -60,34 +38,35 @@ int main(int argc, char** argv)
     input = argv[1];
     if(argc > 2)
       reference_path = argv[2];
-    if(!read_mesh(input, noisy))
-      return 1;
+    const std::string problem = denoise_file::read_mesh_file(input, noisy);
+    if(!problem.empty())
+      return fail(problem);
   }
   else
   {
     reference_path = CGAL::data_file_path("meshes/fandisk.off");
-    if(!read_mesh(reference_path, noisy))
-      return 1;
+    const std::string problem = denoise_file::read_mesh_file(reference_path, noisy);
+    if(!problem.empty())
+      return fail(problem);
     PMP::add_gaussian_noise(noisy, 0.3, CGAL::parameters::random_seed(1));
     input = "fandisk_noisy.off";
-    if(!write_mesh(input, noisy))
-      return 1;
+    const std::string written = denoise_file::write_mesh_file(input, noisy);
+    if(!written.empty())
+      return fail(written);
     std::cout << "noisy input: fandisk + Gaussian noise sigma_E = 0.3 (seed 1), written to " << input << "\n";
   }
-  if(!reference_path.empty() && !read_mesh(reference_path, reference))
-    return 1;
+  if(!reference_path.empty())
+  {
+    const std::string problem = denoise_file::read_mesh_file(reference_path, reference);
+    if(!problem.empty())
+      return fail("reference " + problem);
+  }
 
   Mesh denoised = noisy;
   const auto start = std::chrono::steady_clock::now();
-  try
-  {
-    PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(denoised);
-  }
-  catch(const std::exception& e)
-  {
-    std::cerr << "error: " << e.what() << "\n";
-    return 1;
-  }
+  const std::string problem = denoise_file::denoise<CGAL::Parallel_if_available_tag>(denoised);
+  if(!problem.empty())
+    return fail(problem);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::cout << "denoised " << num_faces(denoised) << " faces in " << seconds
@@ -103,14 +82,13 @@ int main(int argc, char** argv)
     }
     catch(const std::exception& e)
     {
-      std::cerr << "error: cannot compare with the reference: " << e.what() << "\n";
-      return 1;
+      return fail(std::string("cannot compare with the reference: ") + e.what());
     }
   }
-  const std::size_t dot = input.find_last_of('.');
-  const std::string output = (dot == std::string::npos ? input : input.substr(0, dot)) + "_denoised.off";
-  if(!write_mesh(output, denoised))
-    return 1;
+  const std::string output = denoise_file::output_path(input);
+  const std::string written = denoise_file::write_mesh_file(output, denoised, input);
+  if(!written.empty())
+    return fail(written);
   std::cout << "output: " << output << "\n";
   return 0;
 }

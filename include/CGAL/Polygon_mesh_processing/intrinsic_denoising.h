@@ -196,14 +196,32 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
       \cgalParamType{a model of `ReadablePropertyMap` with vertex descriptors as keys and `bool` as values}
       \cgalParamDefault{no vertex is constrained}
     \cgalParamNEnd
+    \cgalParamNBegin{prevent_folds}
+      \cgalParamDescription{if `true`, each step of the vertex update is restricted so that no face comes to point
+                            against its orientation before the step, against its filtered normal (if it agreed with
+                            it before), or against its orientation in the input mesh: the vertices of such a face get
+                            their move halved, up to 4 times, then stay in place. `false` gives eq. 10 exactly, as in
+                            the paper, which "easily generates folded triangles". Faces already folded in the input
+                            are not unfolded.}
+      \cgalParamType{bool}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
     \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map, geom_traits}
       \cgalParamDescription{as for `intrinsic_filter_face_normals()`; the vertex point map must also be writable}
     \cgalParamNEnd
   \cgalNamedParamsEnd
 
-  \pre `tmesh` is a triangle mesh with finite coordinates; the numeric
-       parameters are positive and finite. Otherwise `std::invalid_argument` is
-       thrown. An empty mesh is left as it is.
+  Messy input: isolated vertices and constrained vertices never move; border
+  faces have one-sided neighbourhoods; non-manifold vertices, duplicated
+  vertices and several connected components are handled (components never
+  share a neighbourhood); zero-area faces get a zero normal and never produce a
+  NaN; the result of a mesh scaled by \f$s\f$ is the result scaled by \f$s\f$.
+
+  \pre `tmesh` is a triangle mesh with finite coordinates, and the index maps
+       number vertices and faces from 0 to \f$n-1\f$; the numeric parameters are
+       positive and finite. Otherwise `std::invalid_argument` is thrown naming
+       the problem, and `tmesh` and every property map are left unchanged. An
+       empty mesh is left as it is.
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -223,6 +241,10 @@ void intrinsic_denoising(TriangleMesh& tmesh, const NamedParameters& np = parame
                                                           D::Intrinsic_defaults::vertex_iterations);
   D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname);
   const std::vector<char> fixed = maps.constrained(tmesh);
+  D::Fold_safeguard guard;
+  guard.enabled = choose_parameter(get_parameter(np, internal_np::prevent_folds), true);
+  const std::vector<D::Vec3> input_normals = guard.enabled ? s.input_faces.normals : std::vector<D::Vec3>();
+  guard.reference = &input_normals;
 
   std::vector<D::Vec3>& points = s.mesh.points;
   D::Face_data current = std::move(s.input_faces);
@@ -232,7 +254,7 @@ void intrinsic_denoising(TriangleMesh& tmesh, const NamedParameters& np = parame
     if(it > 0)
       D::compute_face_data<ConcurrencyTag>(s.mesh, points, current);
     D::intrinsic_filter_pass<ConcurrencyTag>(s.paths, current.normals, current.areas, s.kernel, filtered);
-    D::update_vertices<ConcurrencyTag>(s.mesh, points, filtered, fixed, vertex_iterations, centroids, next);
+    D::update_vertices<ConcurrencyTag>(s.mesh, points, filtered, fixed, vertex_iterations, centroids, next, &guard);
   }
   maps.write_points(tmesh, points);
   if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)

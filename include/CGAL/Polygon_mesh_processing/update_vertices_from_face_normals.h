@@ -47,6 +47,14 @@ namespace Polygon_mesh_processing {
       \cgalParamType{unsigned int}
       \cgalParamDefault{`2`}
     \cgalParamNEnd
+    \cgalParamNBegin{prevent_folds}
+      \cgalParamDescription{if `true`, each step is restricted so that no face comes to point against its orientation
+                            before the step or at the start of the call, or against its target normal (if it agreed
+                            with it before): the vertices of such a face get their move halved, up to 4 times, then
+                            stay in place. `false` gives eq. 10 exactly.}
+      \cgalParamType{bool}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
     \cgalParamNBegin{vertex_is_constrained_map}
       \cgalParamDescription{a property map telling which vertices never move}
       \cgalParamType{a model of `ReadablePropertyMap` with vertex descriptors as keys and `bool` as values}
@@ -74,8 +82,10 @@ namespace Polygon_mesh_processing {
     \cgalParamNEnd
   \cgalNamedParamsEnd
 
-  \pre `tmesh` is a triangle mesh with finite coordinates; otherwise
-       `std::invalid_argument` is thrown and `tmesh` is left unchanged.
+  \pre `tmesh` is a triangle mesh with finite coordinates and index maps that
+       number vertices and faces from 0 to \f$n-1\f$, and `normals` are finite;
+       otherwise `std::invalid_argument` is thrown and `tmesh` is left
+       unchanged. Isolated and constrained vertices never move.
   An empty mesh is left as it is.
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh, typename FaceNormalMap,
@@ -102,8 +112,10 @@ void update_vertices_from_face_normals(TriangleMesh& tmesh, const FaceNormalMap&
       throw std::invalid_argument(std::string(fname) + ": a face normal has a NaN or infinite coordinate.");
     n[get(maps.fim, f)] = len > 0. ? (1. / len) * q : D::Vec3{0., 0., 0.};
   }
+  D::Fold_safeguard guard;
+  guard.enabled = parameters::choose_parameter(parameters::get_parameter(np, internal_np::prevent_folds), true);
   std::vector<D::Vec3> centroids, next;
-  D::update_vertices<ConcurrencyTag>(m, m.points, n, maps.constrained(tmesh), iterations, centroids, next);
+  D::update_vertices<ConcurrencyTag>(m, m.points, n, maps.constrained(tmesh), iterations, centroids, next, &guard);
   maps.write_points(tmesh, m.points);
 }
 

@@ -8,6 +8,7 @@
 #ifndef CGAL_PMP_INTERNAL_DENOISING_FACE_DATA_H
 #define CGAL_PMP_INTERNAL_DENOISING_FACE_DATA_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/input_checks.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/parallel.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -65,8 +66,9 @@ struct Flat_mesh
 };
 
 // Throws std::invalid_argument with a message naming the problem if `tmesh`
-// cannot be denoised: a face that is not a triangle, or a non-finite coordinate
-// (checked in `make_flat_mesh`).
+// cannot be denoised: a face that is not a triangle (here), an index map that
+// is not a bijection onto [0, n) or a non-finite coordinate (input_checks.h,
+// called in `make_flat_mesh`).
 template <typename TriangleMesh>
 void check_triangle_faces(const TriangleMesh& tmesh, const char* function_name)
 {
@@ -97,14 +99,14 @@ Flat_mesh make_flat_mesh(const TriangleMesh& tmesh, VertexPointMap vpm, VertexIn
   if(nv >= std::size_t((std::numeric_limits<std::uint32_t>::max)()) ||
      3 * nf >= std::size_t((std::numeric_limits<std::uint32_t>::max)()))
     throw std::invalid_argument(std::string(function_name) + ": the mesh is too large (more than 2^32 entries).");
+  check_index_map(vertices(tmesh), vim, nv, "vertex", function_name);
+  check_index_map(faces(tmesh), fim, nf, "face", function_name);
   m.points.resize(nv);
   for(auto v : vertices(tmesh))
   {
     const auto& p = get(vpm, v);
     const Vec3 q = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-    if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
-      throw std::invalid_argument(std::string(function_name) +
-                                  ": the mesh has a vertex with a NaN or infinite coordinate.");
+    check_finite_point(q[0], q[1], q[2], function_name);
     m.points[get(vim, v)] = q;
   }
   m.triangles.resize(nf);

@@ -31,3 +31,6 @@ CGAL_add_named_parameter(range_signal_t, range_signal, range_signal)
 CGAL_add_named_parameter(unit_length_result_t, unit_length_result, unit_length_result)
 // GEODESIC paths: rings of faces added around the neighbourhood patch
 CGAL_add_named_parameter(geodesic_patch_rings_t, geodesic_patch_rings, geodesic_patch_rings)
+// whether the vertex update (eq. 10) is restricted so that no face folds
+// (default true; false reproduces the paper's update exactly)
+CGAL_add_named_parameter(prevent_folds_t, prevent_folds, prevent_folds)

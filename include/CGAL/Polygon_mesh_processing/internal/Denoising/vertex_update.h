@@ -8,6 +8,8 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/face_data.h>
 
+#include <array>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -15,17 +17,145 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Denoising {
 
+// ---- Fold safeguard -------------------------------------------------------
+//
+// The update of eq. 10 "easily generates folded triangles" (the paper, sec. 6).
+// With the safeguard on, a step never lets a face
+//   (a) point against its orientation before the step,
+//   (b) point against its target (filtered) normal if it did not before, nor
+//   (c) point against its reference orientation (the input mesh's, for
+//       intrinsic_denoising(); the orientation at the start of the call
+//       otherwise) if it did not before.
+// Rule (c) makes "no face points against its input orientation" an invariant
+// of the whole denoising: a face cannot turn over gradually either. A face
+// that the input already has folded is not unfolded by it.
+// Per step: all vertices compute their move (eq. 10); faces are checked at the
+// new positions; the vertices of a face that folds have their move halved,
+// `max_halvings` times at most; vertices still on a folding face after that
+// stay where they are (repeated until no face folds, which terminates since a
+// face whose three vertices stay cannot fold). Faces the package treats as
+// degenerate (zero normal, see face_geometry) are not checked. Every decision
+// depends only on the positions of the previous step, so the result is the
+// same for any number of threads.
+struct Fold_safeguard
+{
+  bool enabled = true;
+  unsigned int max_halvings = 4;
+  // unit normals of the reference orientation by face index (zero: not
+  // checked); if null, update_vertices uses the orientation at its start
+  const std::vector<Vec3>* reference = nullptr;
+  // counters of the last call of update_vertices (for tests and benchmarks)
+  std::size_t halved_moves = 0; // vertex moves halved at least once
+  std::size_t frozen_moves = 0; // vertex moves cancelled
+};
+
+// Whether moving the corners of triangle t from `before` to `after` folds it
+// (rules (a) and (b) above).
+inline bool folds(const std::array<std::uint32_t, 3>& t, const std::vector<Vec3>& before,
+                  const std::vector<Vec3>& after, const Vec3& target, const Vec3& reference)
+{
+  const Vec3 &a0 = before[t[0]], &b0 = before[t[1]], &c0 = before[t[2]];
+  const Vec3 e0 = b0 - a0, f0 = c0 - a0;
+  const Vec3 n0 = cross(e0, f0);
+  const Vec3 &a1 = after[t[0]], &b1 = after[t[1]], &c1 = after[t[2]];
+  const Vec3 n1 = cross(b1 - a1, c1 - a1);
+  if(dot(n0, reference) > 0. && !(dot(n1, reference) > 0.))
+    return true; // (c)
+  const double scale = squared_norm(e0) + squared_norm(f0) + squared_norm(c0 - b0);
+  if(!(norm(n0) > degenerate_face_tolerance * scale))
+    return false; // degenerate before the step: no orientation to keep
+  if(!(dot(n1, n0) > 0.))
+    return true; // (a)
+  return dot(n0, target) > 0. && !(dot(n1, target) > 0.); // (b)
+}
+
+// Restricts the moves `points` -> `next` of one step as described above;
+// `scale` and `bad` are scratch space.
+template <typename ConcurrencyTag>
+void apply_fold_safeguard(const Flat_mesh& m, const std::vector<Vec3>& points, std::vector<Vec3>& next,
+                          const std::vector<Vec3>& normals, Fold_safeguard& guard, std::vector<double>& scale,
+                          std::vector<char>& bad)
+{
+  const std::size_t nf = m.number_of_faces(), nv = m.number_of_vertices();
+  bad.assign(nf, 0);
+  scale.assign(nv, 1.);
+  // marks the folding faces; returns whether there is one
+  auto check = [&]() {
+    for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+      for(std::size_t f = b; f < e; ++f)
+        bad[f] = folds(m.triangles[f], points, next, normals[f], (*guard.reference)[f]) ? 1 : 0;
+    });
+    for(char x : bad)
+      if(x)
+        return true;
+    return false;
+  };
+  auto touches_bad_face = [&](std::size_t v) {
+    for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
+      if(bad[m.vertex_faces[k]])
+        return true;
+    return false;
+  };
+  for(unsigned int round = 0; check(); ++round)
+  {
+    const bool halve = round < guard.max_halvings;
+    for_each_chunk<ConcurrencyTag>(nv, [&](std::size_t b, std::size_t e) {
+      for(std::size_t v = b; v < e; ++v)
+      {
+        if(scale[v] == 0. || !touches_bad_face(v))
+          continue;
+        if(halve)
+        {
+          next[v] = points[v] + 0.5 * (next[v] - points[v]);
+          scale[v] *= 0.5;
+        }
+        else
+        {
+          next[v] = points[v];
+          scale[v] = 0.;
+        }
+      }
+    });
+  }
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    if(scale[v] == 0.)
+      ++guard.frozen_moves;
+    else if(scale[v] < 1.)
+      ++guard.halved_moves;
+  }
+}
+
 // `iterations` steps of
 //   v <- v + 1/|F_v| sum_{j in F_v} n_j (n_j . (c_j - v)),
 // all vertices moved at once from the positions of the previous step (c_j are
 // the centroids of that step). Vertices with `fixed[v] != 0` and vertices with
-// no incident face do not move. `centroids` is scratch space.
+// no incident face do not move. `centroids` is scratch space. With a `guard`
+// that is enabled, every step is restricted so that no face folds (see
+// Fold_safeguard).
 template <typename ConcurrencyTag>
 void update_vertices(const Flat_mesh& m, std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                      const std::vector<char>& fixed, unsigned int iterations, std::vector<Vec3>& centroids,
-                     std::vector<Vec3>& next)
+                     std::vector<Vec3>& next, Fold_safeguard* guard = nullptr)
 {
+  std::vector<double> guard_scale;
+  std::vector<char> guard_bad;
   const std::size_t nf = m.number_of_faces(), nv = m.number_of_vertices();
+  std::vector<Vec3> start_orientation;
+  if(guard)
+  {
+    guard->halved_moves = guard->frozen_moves = 0;
+    if(guard->enabled && !guard->reference)
+    {
+      Face_data fd;
+      compute_face_data<ConcurrencyTag>(m, points, fd);
+      start_orientation = std::move(fd.normals);
+    }
+  }
+  Fold_safeguard* const active_guard = guard && guard->enabled ? guard : nullptr;
+  const std::vector<Vec3>* const saved_reference = guard ? guard->reference : nullptr;
+  if(active_guard && !active_guard->reference)
+    active_guard->reference = &start_orientation;
   centroids.resize(nf);
   next.resize(nv);
   for(unsigned int it = 0; it < iterations; ++it)
@@ -56,8 +186,12 @@ void update_vertices(const Flat_mesh& m, std::vector<Vec3>& points, const std::v
         next[v] = points[v] + (1. / double(fe - fb)) * move;
       }
     });
+    if(active_guard)
+      apply_fold_safeguard<ConcurrencyTag>(m, points, next, normals, *active_guard, guard_scale, guard_bad);
     points.swap(next);
   }
+  if(guard)
+    guard->reference = saved_reference;
 }
 
 } // namespace Denoising

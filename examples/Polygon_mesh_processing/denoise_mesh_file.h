@@ -1,0 +1,287 @@
+// The mesh-file entry of the command-line program, shared with the fuzz
+// harness (fuzz/fuzz_denoise_off.cpp) and the tests: read a mesh from bytes or
+// a file, validate it, denoise it, write the result atomically. Every function
+// reports failure as a one-line message instead of crashing.
+
+#ifndef CGAL_DENOISING_EXAMPLES_DENOISE_MESH_FILE_H
+#define CGAL_DENOISING_EXAMPLES_DENOISE_MESH_FILE_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
+
+#include <CGAL/IO/OFF/File_scanner_OFF.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <istream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace denoise_file {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+
+// Lower-case extension of `path` without the dot ("" if none).
+inline std::string extension(const std::string& path)
+{
+  const std::string name = std::filesystem::path(path).filename().string();
+  const std::size_t dot = name.find_last_of('.');
+  std::string ext = dot == std::string::npos ? std::string() : name.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+// Checks what the denoiser needs: a non-empty triangle mesh with finite
+// coordinates and valid connectivity. Returns "" or a one-line message.
+inline std::string validate(const Mesh& mesh)
+{
+  if(num_faces(mesh) == 0)
+    return "the mesh has no face";
+  if(!mesh.is_valid(false))
+    return "the mesh has an invalid connectivity";
+  if(!CGAL::is_triangle_mesh(mesh))
+    return "the mesh has a face that is not a triangle (triangulate it first)";
+  for(auto v : vertices(mesh))
+  {
+    const K::Point_3& p = mesh.point(v);
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      return "the mesh has a NaN or infinite coordinate";
+  }
+  return std::string();
+}
+
+// Reads OFF data of `byte_count` bytes as CGAL's OFF reader does (same
+// scanner), but with bounds CGAL's reader lacks: the counts of the header and
+// the size of each face must fit in the data (CGAL allocates them before
+// reading, so a 20-byte file announcing 2e9 vertices would ask for 48 GB), and
+// indices must be in range. A soup that is not a manifold surface is repaired
+// by orient_polygon_soup() (vertices are duplicated on non-manifold edges and
+// vertices; the faces stay). Returns "" or a one-line message.
+inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh)
+{
+  CGAL::File_scanner_OFF scanner(in, false);
+  if(in.fail())
+    return "not an OFF file (bad or missing header)";
+  const std::size_t nv = scanner.size_of_vertices(), nf = scanner.size_of_facets();
+  if(nv > byte_count || nf > byte_count)
+    return "the OFF header announces " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+           " faces, more than " + std::to_string(byte_count) + " bytes can hold";
+  std::vector<K::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  points.reserve(nv);
+  polygons.reserve(nf);
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    double x = 0, y = 0, z = 0, w = 1;
+    scanner.scan_vertex(x, y, z, w);
+    if(scanner.has_normals())
+    {
+      double nx, ny, nz;
+      scanner.scan_normal(nx, ny, nz);
+    }
+    if(scanner.has_vcolors() || scanner.has_textures())
+    {
+      // colours are not used; CGAL's scan_color() converts doubles to
+      // unsigned char unchecked (undefined behaviour; found by the fuzzer)
+      if(scanner.binary())
+        return "binary OFF with vertex colours or textures is not supported";
+      scanner.skip_to_next_vertex(i);
+    }
+    if(!in.good())
+      return "truncated or malformed vertex " + std::to_string(i);
+    if(w != 1.)
+    {
+      x /= w;
+      y /= w;
+      z /= w;
+    }
+    if(!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+      return "vertex " + std::to_string(i) + " has a NaN or infinite coordinate";
+    points.emplace_back(x, y, z);
+  }
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    std::vector<std::size_t> polygon;
+    if(scanner.binary())
+    {
+      // 32-bit integers: no conversion issue
+      std::size_t no = std::size_t(-1);
+      scanner.scan_facet(no, i);
+      if((!in.eof() && !in.good()) || no < 3 || no > nv)
+        return "truncated or malformed face " + std::to_string(i);
+      polygon.resize(no);
+      for(std::size_t j = 0; j < no; ++j)
+      {
+        std::size_t id = nv;
+        scanner.scan_facet_vertex_index(id, j + 1, i);
+        if(!in || id >= nv)
+          return "face " + std::to_string(i) + " has a vertex index out of range";
+        polygon[j] = id;
+      }
+      scanner.skip_to_next_facet(i);
+    }
+    else
+    {
+      // Text: parsed here, because CGAL's scanner converts the numbers of the
+      // line, read as doubles, to size_t unchecked (undefined behaviour for a
+      // negative or huge value; found by the fuzzer).
+      CGAL::skip_comment_OFF(in);
+      std::string line;
+      if(!std::getline(in, line))
+        return "truncated face " + std::to_string(i);
+      line = line.substr(0, line.find('#'));
+      std::istringstream words(line);
+      std::vector<double> entries;
+      double d;
+      while(words >> CGAL::IO::iformat(d))
+        entries.push_back(d);
+      auto is_index = [](double x, std::size_t bound) {
+        return x >= 0. && x < double(bound) && x == std::floor(x);
+      };
+      if(entries.empty() || !is_index(entries[0], nv + 1) || entries[0] < 3. ||
+         entries.size() < 1 + std::size_t(entries[0]))
+        return "malformed face " + std::to_string(i);
+      polygon.resize(std::size_t(entries[0]));
+      for(std::size_t j = 0; j < polygon.size(); ++j)
+      {
+        if(!is_index(entries[j + 1], nv))
+          return "face " + std::to_string(i) + " has a vertex index out of range";
+        polygon[j] = std::size_t(entries[j + 1]);
+      }
+    }
+    for(std::size_t j = 0; j < polygon.size(); ++j)
+      for(std::size_t k = j + 1; k < polygon.size(); ++k)
+        if(polygon[j] == polygon[k])
+          return "face " + std::to_string(i) + " uses a vertex twice";
+    polygons.push_back(std::move(polygon));
+  }
+  if(!in && !in.eof())
+    return "malformed OFF data";
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    PMP::orient_polygon_soup(points, polygons);
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    return "the faces do not form a surface, even after orient_polygon_soup()";
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  return std::string();
+}
+
+// Reads a mesh in `format` ("off", "obj", "ply" or "stl") of `byte_count`
+// bytes from `in`, then validates it. Returns "" on success, a one-line
+// message otherwise (and leaves `mesh` empty).
+inline std::string read_mesh(std::istream& in, const std::string& format, std::size_t byte_count, Mesh& mesh)
+{
+  mesh.clear();
+  std::string problem;
+  try
+  {
+    const auto np = CGAL::parameters::verbose(false);
+    if(format == "off")
+      problem = read_off(in, byte_count, mesh);
+    else if(format == "obj" || format == "ply" || format == "stl")
+    {
+      const bool ok = format == "obj"   ? CGAL::IO::read_OBJ(in, mesh, np)
+                      : format == "ply" ? CGAL::IO::read_PLY(in, mesh, np)
+                                        : CGAL::IO::read_STL(in, mesh, np);
+      if(!ok)
+        problem = "unreadable, truncated or malformed " + format + " data (or not a manifold surface)";
+    }
+    else
+      problem = "unknown file format '" + format + "' (OFF, OBJ, PLY and STL are read)";
+  }
+  catch(const std::exception& e) // CGAL's failed assertions, std::bad_alloc
+  {
+    problem = std::string("malformed ") + format + " data (" + e.what() + ")";
+  }
+  if(problem.empty())
+    problem = validate(mesh);
+  if(!problem.empty())
+  {
+    mesh.clear();
+    // keep the message on one line
+    for(char& c : problem)
+      if(c == '\n' || c == '\r')
+        c = ' ';
+  }
+  return problem;
+}
+
+inline std::string read_mesh_file(const std::string& path, Mesh& mesh)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if(!in || ec)
+    return "cannot open '" + path + "'";
+  const std::string problem = read_mesh(in, extension(path), std::size_t(size), mesh);
+  return problem.empty() ? problem : "'" + path + "': " + problem;
+}
+
+// Denoises `mesh` with the package's defaults (plus `np`); on failure `mesh`
+// is unchanged and a one-line message is returned.
+template <typename ConcurrencyTag = CGAL::Sequential_tag,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+std::string denoise(Mesh& mesh, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  try
+  {
+    CGAL::Polygon_mesh_processing::intrinsic_denoising<ConcurrencyTag>(mesh, np);
+  }
+  catch(const std::exception& e)
+  {
+    return e.what();
+  }
+  return std::string();
+}
+
+// <input without its extension>_denoised.off, next to the input.
+inline std::string output_path(const std::string& input)
+{
+  std::filesystem::path p(input);
+  return (p.parent_path() / (p.stem().string() + "_denoised.off")).string();
+}
+
+// Writes `mesh` (OFF, 17 digits) to `path` through a temporary file in the
+// same directory and a rename: `path` is either left as it was or holds the
+// whole mesh. Refuses to write over `protect` (the input file).
+inline std::string write_mesh_file(const std::string& path, const Mesh& mesh, const std::string& protect = "")
+{
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if(!protect.empty() && fs::exists(path, ec) && fs::equivalent(path, protect, ec))
+    return "refusing to overwrite the input '" + protect + "'";
+  const std::string tmp = path + ".tmp" + std::to_string(static_cast<long>(::getpid())) + ".off";
+  bool ok = false;
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    ok = out && CGAL::IO::write_OFF(out, mesh, CGAL::parameters::stream_precision(17));
+    out.close();
+    ok = ok && !out.fail();
+  }
+  if(!ok || std::rename(tmp.c_str(), path.c_str()) != 0)
+  {
+    std::remove(tmp.c_str());
+    return "cannot write '" + path + "'";
+  }
+  return std::string();
+}
+
+} // namespace denoise_file
+
+#endif

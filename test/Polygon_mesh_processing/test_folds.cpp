@@ -1,0 +1,105 @@
+// The fold safeguard of the vertex update (prevent_folds): no face of the
+// denoised mesh points against its orientation in the input mesh.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Polygon_mesh_processing/add_noise.h>
+#include <CGAL/Polygon_mesh_processing/denoising_error.h>
+#include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
+#include <CGAL/Polygon_mesh_processing/update_vertices_from_face_normals.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include "synthetic_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+
+namespace {
+
+Mesh noisy_fandisk(bool impulsive, double sigma)
+{
+  Mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), mesh) || num_faces(mesh) == 0)
+    throw std::runtime_error("cannot read fandisk.off (CGAL data set)");
+  if(impulsive)
+    PMP::add_impulsive_noise(mesh, 0.1, sigma, CGAL::parameters::random_seed(1));
+  else
+    PMP::add_gaussian_noise(mesh, sigma, CGAL::parameters::random_seed(1));
+  return mesh;
+}
+
+// Unnormalised normal (twice the area vector) of each face, by face index.
+std::vector<K::Vector_3> area_vectors(const Mesh& mesh)
+{
+  std::vector<K::Vector_3> n;
+  for(auto f : faces(mesh))
+  {
+    auto h = halfedge(f, mesh);
+    const K::Point_3 &a = mesh.point(source(h, mesh)), &b = mesh.point(target(h, mesh)),
+                     &c = mesh.point(target(next(h, mesh), mesh));
+    n.push_back(CGAL::cross_product(b - a, c - a));
+  }
+  return n;
+}
+
+// Faces of `after` whose normal points against (or is orthogonal to) the
+// normal of the same face in `before`; faces of zero area in `before` are not
+// counted.
+std::size_t flipped_faces(const Mesh& before, const Mesh& after)
+{
+  const auto a = area_vectors(before), b = area_vectors(after);
+  std::size_t count = 0;
+  for(std::size_t i = 0; i < a.size(); ++i)
+    if(a[i].squared_length() > 0. && !(a[i] * b[i] > 0.))
+      ++count;
+  return count;
+}
+
+struct Fold_case
+{
+  const char* name;
+  bool impulsive;
+  double sigma;
+};
+
+void check_no_flips(const Fold_case& c)
+{
+  const Mesh reference = noisy_fandisk(false, 0.);
+  const Mesh noisy = noisy_fandisk(c.impulsive, c.sigma);
+  Mesh guarded = noisy, unguarded = noisy;
+  PMP::intrinsic_denoising(guarded);
+  PMP::intrinsic_denoising(unguarded, CGAL::parameters::prevent_folds(false));
+  const std::size_t fg = flipped_faces(noisy, guarded), fu = flipped_faces(noisy, unguarded);
+  std::printf("%s: flipped faces (against the noisy input) guarded %zu, unguarded %zu; against the clean mesh: "
+              "noisy %zu, guarded %zu, unguarded %zu; E_n guarded %.3f deg, unguarded %.3f deg\n",
+              c.name, fg, fu, flipped_faces(reference, noisy), flipped_faces(reference, guarded),
+              flipped_faces(reference, unguarded), PMP::face_normal_error(guarded, reference),
+              PMP::face_normal_error(unguarded, reference));
+  EXPECT_EQ(fg, 0u);
+}
+
+} // namespace
+
+TEST(FoldSafeguard, NoFlippedFacesOnNoisyFandiskSigma03)
+{
+  check_no_flips({"fandisk Gaussian sigma_E 0.3", false, 0.3});
+}
+
+TEST(FoldSafeguard, NoFlippedFacesOnNoisyFandiskSigma05)
+{
+  check_no_flips({"fandisk Gaussian sigma_E 0.5", false, 0.5});
+}
+
+TEST(FoldSafeguard, NoFlippedFacesOnImpulsiveNoise)
+{
+  check_no_flips({"fandisk impulsive 10% sigma_E 1.0", true, 1.0});
+}
