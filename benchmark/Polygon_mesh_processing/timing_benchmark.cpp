@@ -79,7 +79,7 @@ static void BM_neighborhoods(benchmark::State& state)
   const Stages& s = stages();
   for(auto _ : state)
     benchmark::DoNotOptimize(D::geometric_neighborhoods<Tag>(s.mesh, s.faces.centroids, 4 * s.d));
-  state.counters["neighbours/face"] = double(s.neighbors.items.size()) / s.mesh.number_of_faces();
+  state.counters["neighbours/face"] = double(s.neighbors.items.size()) / double(s.mesh.number_of_faces());
 }
 
 static void BM_square_pattern_paths(benchmark::State& state)

@@ -39,10 +39,9 @@ Path_forest shortest_graph_paths(const std::vector<Vec3>& positions, const Adjac
     std::vector<char> settled;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
   };
-  std::vector<Path_node> nodes;
   Path_forest forest;
-  build_lists<ConcurrencyTag>(
-      n, forest.offsets, nodes,
+  build_lists<ConcurrencyTag, Path_node>(
+      n, forest.offsets,
       [n] {
         return Scratch{std::vector<std::uint32_t>(n, std::uint32_t(-1)), std::vector<std::uint32_t>(n, 0),
                        std::vector<double>(n, 0.), std::vector<std::int32_t>(n, Path_forest::root),
@@ -90,8 +89,8 @@ Path_forest shortest_graph_paths(const std::vector<Vec3>& positions, const Adjac
         for(std::uint32_t k = neighbors.begin(i); k < neighbors.end(i); ++k)
           if(!s.settled[neighbors.items[k]])
             out.push_back(Path_node{neighbors.items[k], Path_forest::root});
-      });
-  forest.set_nodes(nodes);
+      },
+      [&forest](const std::vector<Path_node>& chunk) { forest.append_nodes(chunk); });
   return forest;
 }
 

@@ -140,8 +140,9 @@ bool read_step_length(const NamedParameters& np)
   return parameters::choose_parameter(parameters::get_parameter(np, internal_np::use_step_length), false);
 }
 
-// What stays fixed across the iterations of Algorithm 1: the flat mesh,
-// neighbourhoods and paths (built on the mesh as given), and the kernel.
+// What stays fixed across the iterations of Algorithm 1: the flat mesh and
+// paths (built on the mesh as given), and the kernel. The neighbourhoods are
+// released once the paths are built (the path trees list the neighbours).
 struct Intrinsic_setup
 {
   Flat_mesh mesh;
@@ -167,6 +168,8 @@ Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParam
   s.neighbors = geometric_neighborhoods<ConcurrencyTag>(s.mesh, s.input_faces.centroids, s.radius);
   s.paths = make_paths<ConcurrencyTag>(np, strategy, step_length, d, s.input_faces.centroids,
                                        Face_vertex_adjacency{s.mesh}, s.neighbors, &s.mesh, &s.input_faces, fname);
+  Csr().offsets.swap(s.neighbors.offsets); // the paths hold everything the iterations need
+  Csr().items.swap(s.neighbors.items);
   return s;
 }
 

@@ -52,12 +52,13 @@ void for_each_chunk(std::size_t n, const Body& body, std::size_t grain = 256)
 }
 
 // Builds a list of records for each item 0..n-1, in parallel chunks, and
-// concatenates the lists in item order: offsets (size n + 1) and records.
-// `make_scratch()` makes the scratch state of one chunk (allocated once per
-// chunk); `fill(i, scratch, out)` appends item i's records to `out`.
-template <typename ConcurrencyTag, typename Record, typename MakeScratch, typename Fill>
-void build_lists(std::size_t n, std::vector<std::uint32_t>& offsets, std::vector<Record>& records,
-                 const MakeScratch& make_scratch, const Fill& fill)
+// hands the chunks in item order to `append(chunk)`, freeing each one right
+// after, so that the records exist about once in memory; fills offsets (size
+// n + 1). `make_scratch()` makes the scratch state of one chunk (allocated
+// once per chunk); `fill(i, scratch, out)` appends item i's records to `out`.
+template <typename ConcurrencyTag, typename Record, typename MakeScratch, typename Fill, typename Append>
+void build_lists(std::size_t n, std::vector<std::uint32_t>& offsets, const MakeScratch& make_scratch,
+                 const Fill& fill, const Append& append)
 {
   // few chunks: a chunk's scratch may be as large as the mesh
   const std::size_t chunk_size = (std::max)(std::size_t(2048), n / 64 + 1);
@@ -83,10 +84,25 @@ void build_lists(std::size_t n, std::vector<std::uint32_t>& offsets, std::vector
       1);
   for(std::size_t i = 0; i < n; ++i)
     offsets[i + 1] += offsets[i];
+  for(auto& c : chunks)
+  {
+    append(c);
+    std::vector<Record>().swap(c);
+  }
+}
+
+// The same, appending the records to `records`.
+template <typename ConcurrencyTag, typename Record, typename MakeScratch, typename Fill>
+void build_lists(std::size_t n, std::vector<std::uint32_t>& offsets, std::vector<Record>& records,
+                 const MakeScratch& make_scratch, const Fill& fill)
+{
   records.clear();
-  records.reserve(offsets[n]);
-  for(const auto& c : chunks)
-    records.insert(records.end(), c.begin(), c.end());
+  build_lists<ConcurrencyTag, Record>(n, offsets, make_scratch, fill,
+                                      [&records, &offsets](const std::vector<Record>& chunk) {
+                                        if(records.capacity() < offsets.back())
+                                          records.reserve(offsets.back()); // exact: the counts are known by now
+                                        records.insert(records.end(), chunk.begin(), chunk.end());
+                                      });
 }
 
 } // namespace Denoising

@@ -46,16 +46,20 @@ struct Path_forest
   std::vector<char> weighted;       // empty: every node is weighted
   std::vector<double> step;         // empty: every step length is 1
 
-  // fills face and parent from the nodes of all trees, in order
+  // appends nodes (of the trees, in order) to face and parent, reserving
+  // room for all nodes (offsets complete) at the first call
   template <typename Nodes>
-  void set_nodes(const Nodes& nodes)
+  void append_nodes(const Nodes& nodes)
   {
-    face.resize(nodes.size());
-    parent.resize(nodes.size());
-    for(std::size_t k = 0; k < nodes.size(); ++k)
+    if(face.capacity() < offsets.back())
     {
-      face[k] = nodes[k].face;
-      parent[k] = nodes[k].parent;
+      face.reserve(offsets.back());
+      parent.reserve(offsets.back());
+    }
+    for(const auto& node : nodes)
+    {
+      face.push_back(node.face);
+      parent.push_back(node.parent);
     }
   }
 

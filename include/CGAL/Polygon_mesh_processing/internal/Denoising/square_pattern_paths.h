@@ -74,10 +74,9 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag>
 Path_forest square_pattern_paths(const Flat_mesh& m, const Face_data& fd, const Csr& neighbors)
 {
   typedef std::array<std::vector<std::pair<double, std::uint32_t>>, 6> Regions;
-  std::vector<Path_node> nodes;
   Path_forest forest;
-  build_lists<ConcurrencyTag>(
-      m.number_of_faces(), forest.offsets, nodes, [] { return Regions(); },
+  build_lists<ConcurrencyTag, Path_node>(
+      m.number_of_faces(), forest.offsets, [] { return Regions(); },
       [&](std::size_t i, Regions& regions, std::vector<Path_node>& out) {
         for(auto& r : regions)
           r.clear();
@@ -116,8 +115,8 @@ Path_forest square_pattern_paths(const Flat_mesh& m, const Face_data& fd, const 
             out.push_back(Path_node{r[k - 1].second, parent});
           }
         }
-      });
-  forest.set_nodes(nodes);
+      },
+      [&forest](const std::vector<Path_node>& chunk) { forest.append_nodes(chunk); });
   return forest;
 }
 
