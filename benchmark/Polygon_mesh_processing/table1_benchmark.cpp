@@ -130,15 +130,15 @@ std::vector<Method> make_methods()
                  return s[1] > 0. ? format("sigma_c=%.2gl sigma_s=%.2gl iter=%.0f", s)
                                   : format("sigma_c=%.2gl sigma_s=adaptive(%.0f) iter=%.0f", s);
                },
-               product({{1., 1.5, 2.}, {0., 0.3, 0.6}, {3., 6., 10.}}),
-               product({{1., 1.5}, {0.}, {3., 6.}})});
+               product({{0.7, 1., 1.5, 2.}, {0., 0.2, 0.3, 0.6}, {1., 2., 3., 6.}}),
+               product({{0.7, 1.}, {0., 0.2, 0.3}, {2., 3.}})});
   // JDD03: sigma_f, sigma_g (x mean edge length)
   m.push_back({"JDD03",
                [](Mesh& mesh, const Setting& s) {
                  PMP::non_iterative_denoising(mesh, CGAL::parameters::sigma_spatial(s[0]).sigma_range(s[1]));
                },
                [](const Setting& s) { return format("sigma_f=%.2gl sigma_g=%.2gl", s); },
-               product({{1.5, 2., 3., 4.}, {0.3, 0.5, 1.}}), product({{1.5, 2., 3.}, {0.5, 1.}})});
+               product({{1., 1.5, 2., 3., 4.}, {0.3, 0.5, 1., 2.}}), product({{1., 1.5, 2.}, {1., 2., 3.}})});
   // SRML07: T, n1 (normal iterations), n2 (vertex iterations)
   m.push_back({"SRML07",
                [](Mesh& mesh, const Setting& s) {
@@ -147,7 +147,8 @@ std::vector<Method> make_methods()
                                u(s[2])));
                },
                [](const Setting& s) { return format("T=%.2g n1=%.0f n2=%.0f", s); },
-               product({{0.3, 0.5, 0.7, 0.8}, {10., 20., 40.}, {10.}}), product({{0.5, 0.7}, {10., 20.}, {10.}})});
+               product({{0.3, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95}, {10., 20., 40., 80., 160.}, {10.}}),
+               product({{0.3, 0.5, 0.7}, {5., 10., 20.}, {10.}})});
   // ZFAT11 (local): sigma_s (x d), sigma_r, iterations; 10 vertex iterations
   m.push_back({"ZFAT11",
                [](Mesh& mesh, const Setting& s) {
@@ -155,14 +156,15 @@ std::vector<Method> make_methods()
                      mesh, CGAL::parameters::sigma_spatial(s[0]).sigma_range(s[1]).number_of_iterations(u(s[2])));
                },
                [](const Setting& s) { return format("sigma_s=%.2gd sigma_r=%.2g iter=%.0f", s); },
-               product({{1.}, {0.2, 0.35, 0.5}, {10., 20., 40.}}), product({{1.}, {0.35, 0.5}, {10., 20.}})});
+               product({{1., 2.}, {0.2, 0.35, 0.5}, {10., 20., 40., 80., 160.}}),
+               product({{1.}, {0.5, 0.7, 1.}, {5., 10., 20.}})});
   // HS13: lambda factor (lambda = c l^2 gamma), alpha factor
   m.push_back({"HS13",
                [](Mesh& mesh, const Setting& s) {
                  PMP::l0_denoising(mesh, CGAL::parameters::l0_weight(s[0]).regularization_weight(s[1]));
                },
                [](const Setting& s) { return format("lambda=%.3g l^2 gamma, alpha0=%.2g gamma", s); },
-               product({{0.1, 0.3, 1.15}, {0.1}}), product({{0.3, 1.15}, {0.1}})});
+               product({{0.03, 0.1, 0.3, 0.6, 1.15}, {0.1}}), product({{0.03, 0.1}, {0.1}})});
   // ZDZ15: radius (x d), sigma_r, iterations; sigma_s = d, 10 vertex iterations
   m.push_back({"ZDZ15",
                [](Mesh& mesh, const Setting& s) {
@@ -171,7 +173,8 @@ std::vector<Method> make_methods()
                                                         .number_of_iterations(u(s[2])));
                },
                [](const Setting& s) { return format("r=%.2gd sigma_r=%.2g iter=%.0f", s); },
-               product({{2.}, {0.2, 0.35, 0.5}, {10., 20., 40.}}), product({{2.}, {0.35, 0.5}, {10., 20.}})});
+               product({{2.}, {0.1, 0.2, 0.35, 0.5}, {10., 20., 40., 80., 160.}}),
+               product({{2.}, {0.5, 0.7, 1.}, {3., 5., 10.}})});
   // ours (intrinsic_denoising, square-pattern paths): sigma_s = sigma_r, r (x d), k; v = 2
   m.push_back({"ours",
                [](Mesh& mesh, const Setting& s) {
@@ -183,12 +186,12 @@ std::vector<Method> make_methods()
                },
                [](const Setting& s) { return format("sigma=%.2g r=%.2gd k=%.0f v=2", s); },
                [] {
-                 std::vector<Setting> g = product({{0.4, 0.5, 0.6}, {4.}, {30.}});
-                 for(const Setting& s : product({{0.4, 0.5, 0.6}, {5.}, {50., 75.}}))
+                 std::vector<Setting> g = product({{0.4, 0.5, 0.6, 0.8}, {4.}, {30.}});
+                 for(const Setting& s : product({{0.4, 0.5, 0.6, 0.8}, {5.}, {50., 75., 100., 150.}}))
                    g.push_back(s);
                  return g;
                }(),
-               product({{0.6, 0.8}, {4.}, {5., 10.}})});
+               product({{0.8, 1.2, 1.6}, {2., 3.}, {5., 10., 20.}})});
   return m;
 }
 
@@ -346,10 +349,10 @@ int main(int argc, char** argv)
     for(std::size_t k : method_index)
     {
       const double v = results[mi][k].En;
-      std::snprintf(buf, sizeof(buf), v == bestEn ? " **%.2f** |" : " %.2f |", v);
+      std::snprintf(buf, sizeof(buf), v == bestEn ? " **%.3f** |" : " %.3f |", v);
       md << buf;
     }
-    std::snprintf(buf, sizeof(buf), " %.2f |\n", noisy_En[mi]);
+    std::snprintf(buf, sizeof(buf), " %.3f |\n", noisy_En[mi]);
     md << buf;
     std::snprintf(buf, sizeof(buf), "| | E_v (x%.0e) |", model.paper_Ev_scale);
     md << buf;

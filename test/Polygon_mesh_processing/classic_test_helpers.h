@@ -93,6 +93,42 @@ double surface_mesh_vs_polyhedron(const Denoise& denoise)
   return max_distance(positions(sm), positions(poly));
 }
 
+// Pins every 7th vertex of a noisy plane; checks that they stay and that the
+// others move.
+template <typename Denoise>
+void constrained_vertices_do_not_move(const Denoise& denoise)
+{
+  Mesh mesh = denoising_test::plane_grid<Mesh>(12);
+  PMP::add_gaussian_noise(mesh, 0.3, CGAL::parameters::random_seed(2));
+  auto pinned = mesh.add_property_map<Mesh::Vertex_index, bool>("v:pinned", false).first;
+  for(auto v : vertices(mesh))
+    put(pinned, v, std::size_t(v) % 7 == 0);
+  const auto before = positions(mesh);
+  denoise(mesh, pinned);
+  const auto after = positions(mesh);
+  double pinned_move = 0., free_move = 0.;
+  for(auto v : vertices(mesh))
+  {
+    const double d = std::sqrt(CGAL::squared_distance(before[std::size_t(v)], after[std::size_t(v)]));
+    (get(pinned, v) ? pinned_move : free_move) = (std::max)(get(pinned, v) ? pinned_move : free_move, d);
+  }
+  EXPECT_EQ(pinned_move, 0.);
+  EXPECT_GT(free_move, 1e-3);
+}
+
+// Sequential_tag and Parallel_tag give the same positions on a noisy fandisk-
+// sized mesh (a graded octahedron of 8 x 33^2 faces, above the parallel grain).
+template <typename Sequential, typename Parallel>
+double parallel_vs_sequential(const Sequential& sequential, const Parallel& parallel)
+{
+  Mesh a = denoising_test::graded_octahedron<Mesh>(33, 1.4);
+  PMP::add_gaussian_noise(a, 0.3, CGAL::parameters::random_seed(5));
+  Mesh b = a;
+  sequential(a);
+  parallel(b);
+  return max_distance(positions(a), positions(b));
+}
+
 } // namespace classic_test
 
 #endif

@@ -70,3 +70,18 @@ TEST(BilateralMeshDenoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
   PMP::bilateral_mesh_denoising(empty);
   EXPECT_TRUE(empty.is_empty());
 }
+
+TEST(BilateralMeshDenoising, ConstrainedVerticesDoNotMove)
+{
+  constrained_vertices_do_not_move(
+      [](Mesh& m, auto pinned) { PMP::bilateral_mesh_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned)); });
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+TEST(BilateralMeshDenoising, ParallelEqualsSequential)
+{
+  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::bilateral_mesh_denoising<CGAL::Sequential_tag>(m); },
+                                   [](Mesh& m) { PMP::bilateral_mesh_denoising<CGAL::Parallel_tag>(m); }),
+            0.);
+}
+#endif

@@ -49,3 +49,33 @@ TEST(FastFeaturePreservingDenoising, BadThresholdThrowsAndLeavesTheMeshUnchanged
   PMP::fast_feature_preserving_denoising(empty);
   EXPECT_TRUE(empty.is_empty());
 }
+
+TEST(FastFeaturePreservingDenoising, ConstrainedVerticesDoNotMove)
+{
+  constrained_vertices_do_not_move(
+      [](Mesh& m, auto pinned) { PMP::fast_feature_preserving_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned)); });
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+TEST(FastFeaturePreservingDenoising, ParallelEqualsSequential)
+{
+  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::fast_feature_preserving_denoising<CGAL::Sequential_tag>(m); },
+                                   [](Mesh& m) { PMP::fast_feature_preserving_denoising<CGAL::Parallel_tag>(m); }),
+            0.);
+}
+#endif
+
+TEST(FastFeaturePreservingDenoising, FaceNormalMapReceivesUnitFilteredNormals)
+{
+  Mesh mesh = denoising_test::cube<Mesh>(6);
+  PMP::add_gaussian_noise(mesh, 0.2, CGAL::parameters::random_seed(4));
+  auto fnm = mesh.add_property_map<Mesh::Face_index, K::Vector_3>("f:filtered", CGAL::NULL_VECTOR).first;
+  PMP::fast_feature_preserving_denoising(mesh, CGAL::parameters::face_normal_map(fnm));
+  for(auto f : faces(mesh))
+  {
+    const K::Vector_3 n = get(fnm, f);
+    EXPECT_NEAR(n.squared_length(), 1., 1e-12);
+    const double mx = (std::max)({std::abs(n.x()), std::abs(n.y()), std::abs(n.z())});
+    EXPECT_GT(mx, 0.9); // close to one axis of the cube
+  }
+}

@@ -67,3 +67,12 @@ TEST(L0Denoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
   PMP::l0_denoising(empty);
   EXPECT_TRUE(empty.is_empty());
 }
+
+#ifdef CGAL_LINKED_WITH_TBB
+TEST(L0Denoising, ParallelEqualsSequential)
+{
+  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::l0_denoising<CGAL::Sequential_tag>(m); },
+                                   [](Mesh& m) { PMP::l0_denoising<CGAL::Parallel_tag>(m); }),
+            0.);
+}
+#endif

@@ -51,3 +51,18 @@ TEST(NonIterativeDenoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
   PMP::non_iterative_denoising(empty);
   EXPECT_TRUE(empty.is_empty());
 }
+
+TEST(NonIterativeDenoising, ConstrainedVerticesDoNotMove)
+{
+  constrained_vertices_do_not_move(
+      [](Mesh& m, auto pinned) { PMP::non_iterative_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned)); });
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+TEST(NonIterativeDenoising, ParallelEqualsSequential)
+{
+  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::non_iterative_denoising<CGAL::Sequential_tag>(m); },
+                                   [](Mesh& m) { PMP::non_iterative_denoising<CGAL::Parallel_tag>(m); }),
+            0.);
+}
+#endif
