@@ -48,7 +48,8 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-namespace {
+namespace
+{
 
 struct Model
 {
@@ -65,8 +66,8 @@ typedef std::vector<double> Setting;
 struct Method
 {
   std::string name;
-  std::function<void(Mesh&, const Setting&)> run;
-  std::function<std::string(const Setting&)> describe;
+  std::function<void(Mesh &, const Setting &)> run;
+  std::function<std::string(const Setting &)> describe;
   std::vector<Setting> grid, large_grid; // large_grid: for the bunny
 };
 
@@ -77,13 +78,13 @@ struct Result
 };
 
 // the cartesian product of per-parameter value lists
-std::vector<Setting> product(const std::vector<std::vector<double>>& values)
+std::vector<Setting> product(const std::vector<std::vector<double>> &values)
 {
   std::vector<Setting> out(1);
-  for(const auto& list : values)
+  for(const auto &list : values)
   {
     std::vector<Setting> next;
-    for(const Setting& s : out)
+    for(const Setting &s : out)
       for(double v : list)
       {
         next.push_back(s);
@@ -94,21 +95,34 @@ std::vector<Setting> product(const std::vector<std::vector<double>>& values)
   return out;
 }
 
-std::string format(const char* fmt, const Setting& s)
+std::string format(const char *fmt, const Setting &s)
 {
   char buf[256];
   switch(s.size())
   {
-  case 1: std::snprintf(buf, sizeof(buf), fmt, s[0]); break;
-  case 2: std::snprintf(buf, sizeof(buf), fmt, s[0], s[1]); break;
-  case 3: std::snprintf(buf, sizeof(buf), fmt, s[0], s[1], s[2]); break;
-  case 4: std::snprintf(buf, sizeof(buf), fmt, s[0], s[1], s[2], s[3]); break;
-  default: std::snprintf(buf, sizeof(buf), fmt, s[0], s[1], s[2], s[3], s[4]); break;
+  case 1:
+    std::snprintf(buf, sizeof(buf), fmt, s[0]);
+    break;
+  case 2:
+    std::snprintf(buf, sizeof(buf), fmt, s[0], s[1]);
+    break;
+  case 3:
+    std::snprintf(buf, sizeof(buf), fmt, s[0], s[1], s[2]);
+    break;
+  case 4:
+    std::snprintf(buf, sizeof(buf), fmt, s[0], s[1], s[2], s[3]);
+    break;
+  default:
+    std::snprintf(buf, sizeof(buf), fmt, s[0], s[1], s[2], s[3], s[4]);
+    break;
   }
   return buf;
 }
 
-unsigned u(double x) { return unsigned(x + 0.5); }
+unsigned u(double x)
+{
+  return unsigned(x + 0.5);
+}
 
 // The methods in the order of the paper's table, with their grids. Spatial
 // sigmas and radii of the classic methods are relative to the mesh (see each
@@ -119,14 +133,16 @@ std::vector<Method> make_methods()
   // FDC03: sigma_c (x mean edge length), sigma_s (x mean edge length; 0 = the
   // paper's adaptive choice), iterations
   m.push_back({"FDC03",
-               [](Mesh& mesh, const Setting& s) {
+               [](Mesh &mesh, const Setting &s)
+               {
                  auto np = CGAL::parameters::sigma_spatial(s[0]).number_of_iterations(u(s[2]));
                  if(s[1] > 0.)
                    PMP::bilateral_mesh_denoising(mesh, np.sigma_range(s[1]));
                  else
                    PMP::bilateral_mesh_denoising(mesh, np);
                },
-               [](const Setting& s) {
+               [](const Setting &s)
+               {
                  return s[1] > 0. ? format("sigma_c=%.2gl sigma_s=%.2gl iter=%.0f", s)
                                   : format("sigma_c=%.2gl sigma_s=adaptive(%.0f) iter=%.0f", s);
                },
@@ -134,60 +150,63 @@ std::vector<Method> make_methods()
                product({{0.7, 1.}, {0., 0.2, 0.3}, {2., 3.}})});
   // JDD03: sigma_f, sigma_g (x mean edge length)
   m.push_back({"JDD03",
-               [](Mesh& mesh, const Setting& s) {
-                 PMP::non_iterative_denoising(mesh, CGAL::parameters::sigma_spatial(s[0]).sigma_range(s[1]));
-               },
-               [](const Setting& s) { return format("sigma_f=%.2gl sigma_g=%.2gl", s); },
+               [](Mesh &mesh, const Setting &s)
+               { PMP::non_iterative_denoising(mesh, CGAL::parameters::sigma_spatial(s[0]).sigma_range(s[1])); },
+               [](const Setting &s) { return format("sigma_f=%.2gl sigma_g=%.2gl", s); },
                product({{1., 1.5, 2., 3., 4.}, {0.3, 0.5, 1., 2.}}), product({{1., 1.5, 2.}, {1., 2., 3.}})});
   // SRML07: T, n1 (normal iterations), n2 (vertex iterations)
   m.push_back({"SRML07",
-               [](Mesh& mesh, const Setting& s) {
+               [](Mesh &mesh, const Setting &s)
+               {
                  PMP::fast_feature_preserving_denoising(
-                     mesh, CGAL::parameters::normal_threshold(s[0]).number_of_iterations(u(s[1])).vertex_iterations(
-                               u(s[2])));
+                     mesh,
+                     CGAL::parameters::normal_threshold(s[0]).number_of_iterations(u(s[1])).vertex_iterations(u(s[2])));
                },
-               [](const Setting& s) { return format("T=%.2g n1=%.0f n2=%.0f", s); },
+               [](const Setting &s) { return format("T=%.2g n1=%.0f n2=%.0f", s); },
                product({{0.3, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95}, {10., 20., 40., 80., 160.}, {10.}}),
                product({{0.3, 0.5, 0.7}, {5., 10., 20.}, {10.}})});
   // ZFAT11 (local): sigma_s (x d), sigma_r, iterations; 10 vertex iterations
   m.push_back({"ZFAT11",
-               [](Mesh& mesh, const Setting& s) {
+               [](Mesh &mesh, const Setting &s)
+               {
                  PMP::bilateral_normal_denoising(
                      mesh, CGAL::parameters::sigma_spatial(s[0]).sigma_range(s[1]).number_of_iterations(u(s[2])));
                },
-               [](const Setting& s) { return format("sigma_s=%.2gd sigma_r=%.2g iter=%.0f", s); },
+               [](const Setting &s) { return format("sigma_s=%.2gd sigma_r=%.2g iter=%.0f", s); },
                product({{1., 2.}, {0.2, 0.35, 0.5}, {10., 20., 40., 80., 160.}}),
                product({{1.}, {0.5, 0.7, 1.}, {5., 10., 20.}})});
   // HS13: lambda factor (lambda = c l^2 gamma), alpha factor
   m.push_back({"HS13",
-               [](Mesh& mesh, const Setting& s) {
-                 PMP::l0_denoising(mesh, CGAL::parameters::l0_weight(s[0]).regularization_weight(s[1]));
-               },
-               [](const Setting& s) { return format("lambda=%.3g l^2 gamma, alpha0=%.2g gamma", s); },
+               [](Mesh &mesh, const Setting &s)
+               { PMP::l0_denoising(mesh, CGAL::parameters::l0_weight(s[0]).regularization_weight(s[1])); },
+               [](const Setting &s) { return format("lambda=%.3g l^2 gamma, alpha0=%.2g gamma", s); },
                product({{0.03, 0.1, 0.3, 0.6, 1.15}, {0.1}}), product({{0.03, 0.1}, {0.1}})});
   // ZDZ15: radius (x d), sigma_r, iterations; sigma_s = d, 10 vertex iterations
   m.push_back({"ZDZ15",
-               [](Mesh& mesh, const Setting& s) {
-                 PMP::guided_normal_denoising(mesh, CGAL::parameters::relative_neighbor_radius(s[0])
-                                                        .sigma_range(s[1])
-                                                        .number_of_iterations(u(s[2])));
+               [](Mesh &mesh, const Setting &s)
+               {
+                 PMP::guided_normal_denoising(
+                     mesh,
+                     CGAL::parameters::relative_neighbor_radius(s[0]).sigma_range(s[1]).number_of_iterations(u(s[2])));
                },
-               [](const Setting& s) { return format("r=%.2gd sigma_r=%.2g iter=%.0f", s); },
+               [](const Setting &s) { return format("r=%.2gd sigma_r=%.2g iter=%.0f", s); },
                product({{2.}, {0.1, 0.2, 0.35, 0.5}, {10., 20., 40., 80., 160.}}),
                product({{2.}, {0.5, 0.7, 1.}, {3., 5., 10.}})});
   // ours (intrinsic_denoising, square-pattern paths): sigma_s = sigma_r, r (x d), k; v = 2
   m.push_back({"ours",
-               [](Mesh& mesh, const Setting& s) {
+               [](Mesh &mesh, const Setting &s)
+               {
                  PMP::intrinsic_denoising(mesh, CGAL::parameters::sigma_spatial(s[0])
                                                     .sigma_range(s[0])
                                                     .relative_neighbor_radius(s[1])
                                                     .number_of_iterations(u(s[2]))
                                                     .vertex_iterations(2));
                },
-               [](const Setting& s) { return format("sigma=%.2g r=%.2gd k=%.0f v=2", s); },
-               [] {
+               [](const Setting &s) { return format("sigma=%.2g r=%.2gd k=%.0f v=2", s); },
+               []
+               {
                  std::vector<Setting> g = product({{0.4, 0.5, 0.6, 0.8}, {4.}, {30.}});
-                 for(const Setting& s : product({{0.4, 0.5, 0.6, 0.8}, {5.}, {50., 75., 100., 150.}}))
+                 for(const Setting &s : product({{0.4, 0.5, 0.6, 0.8}, {5.}, {50., 75., 100., 150.}}))
                    g.push_back(s);
                  return g;
                }(),
@@ -195,7 +214,7 @@ std::vector<Method> make_methods()
   return m;
 }
 
-std::vector<std::string> split(const std::string& s)
+std::vector<std::string> split(const std::string &s)
 {
   std::vector<std::string> out;
   std::stringstream ss(s);
@@ -205,11 +224,11 @@ std::vector<std::string> split(const std::string& s)
   return out;
 }
 
-bool selected(const std::vector<std::string>& list, const std::string& name)
+bool selected(const std::vector<std::string> &list, const std::string &name)
 {
   if(list.empty())
     return true;
-  for(const std::string& s : list)
+  for(const std::string &s : list)
     if(s == name)
       return true;
   return false;
@@ -217,7 +236,7 @@ bool selected(const std::vector<std::string>& list, const std::string& name)
 
 } // namespace
 
-int main(int argc, char** argv)
+int main(int argc, char **argv)
 {
   std::string out_file;
   std::vector<std::string> model_list, method_list;
@@ -241,7 +260,8 @@ int main(int argc, char** argv)
 
   // the paper's Table 1: FDC03 JDD03 SRML07 ZFAT11 HS13 ZDZ15 ours
   std::vector<Model> models;
-  auto load = [](const char* file, Mesh& mesh) {
+  auto load = [](const char *file, Mesh &mesh)
+  {
     const std::string path = CGAL::data_file_path(file);
     if(!CGAL::IO::read_polygon_mesh(path, mesh) || mesh.is_empty())
     {
@@ -251,7 +271,10 @@ int main(int argc, char** argv)
     return true;
   };
   if(selected(model_list, "octahedron"))
-    models.push_back({"octahedron", denoising_test::graded_octahedron<Mesh>(17, 1.4), 0.3, false,
+    models.push_back({"octahedron",
+                      denoising_test::graded_octahedron<Mesh>(17, 1.4),
+                      0.3,
+                      false,
                       {12.81, 10.65, 6.85, 5.27, 3.33, 3.36, 2.03},
                       {28.02, 14.70, 10.71, 6.28, 10.81, 4.90, 2.91},
                       1e-3});
@@ -260,11 +283,19 @@ int main(int argc, char** argv)
     Mesh m;
     if(!load("meshes/fandisk.off", m))
       return 1;
-    models.push_back({"fandisk", m, 0.3, false, {9.73, 9.82, 4.04, 3.35, 5.53, 2.62, 2.27},
-                      {18.14, 15.10, 11.02, 8.72, 18.79, 6.29, 6.35}, 1e-3});
+    models.push_back({"fandisk",
+                      m,
+                      0.3,
+                      false,
+                      {9.73, 9.82, 4.04, 3.35, 5.53, 2.62, 2.27},
+                      {18.14, 15.10, 11.02, 8.72, 18.79, 6.29, 6.35},
+                      1e-3});
   }
   if(selected(model_list, "prism"))
-    models.push_back({"prism", denoising_test::hexagonal_prism<Mesh>(12, 40, 18), 0.1, false,
+    models.push_back({"prism",
+                      denoising_test::hexagonal_prism<Mesh>(12, 40, 18),
+                      0.1,
+                      false,
                       {4.98, 4.48, 3.29, 3.87, 0.71, 0.87, 0.46},
                       {11.89, 10.46, 7.45, 7.9, 3.42, 4.09, 2.77},
                       1e-2});
@@ -273,8 +304,13 @@ int main(int argc, char** argv)
     Mesh m;
     if(!load("meshes/bunny00.off", m))
       return 1;
-    models.push_back({"bunny", m, 0.2, true, {6.93, 5.81, 5.89, 5.68, 7.21, 5.35, 5.11},
-                      {18.36, 9.24, 9.98, 9.35, 10.65, 7.61, 7.26}, 1e-4});
+    models.push_back({"bunny",
+                      m,
+                      0.2,
+                      true,
+                      {6.93, 5.81, 5.89, 5.68, 7.21, 5.35, 5.11},
+                      {18.36, 9.24, 9.98, 9.35, 10.65, 7.61, 7.26},
+                      1e-4});
   }
 
   const std::vector<Method> all_methods = make_methods();
@@ -289,17 +325,17 @@ int main(int argc, char** argv)
   const auto start = std::chrono::steady_clock::now();
   for(std::size_t mi = 0; mi < models.size(); ++mi)
   {
-    const Model& model = models[mi];
+    const Model &model = models[mi];
     Mesh noisy = model.reference;
     PMP::add_gaussian_noise(noisy, model.sigma_E, CGAL::parameters::random_seed(1));
     noisy_En[mi] = PMP::face_normal_error(noisy, model.reference);
     noisy_Ev[mi] = PMP::vertex_position_error(noisy, model.reference);
     for(std::size_t k : method_index)
     {
-      const Method& method = all_methods[k];
-      const std::vector<Setting>& grid = model.large ? method.large_grid : method.grid;
-      Result& best = results[mi][k];
-      for(const Setting& s : grid)
+      const Method &method = all_methods[k];
+      const std::vector<Setting> &grid = model.large ? method.large_grid : method.grid;
+      Result &best = results[mi][k];
+      for(const Setting &s : grid)
       {
         Mesh out = noisy;
         const auto t0 = std::chrono::steady_clock::now();
@@ -335,7 +371,7 @@ int main(int argc, char** argv)
   md << "\n";
   for(std::size_t mi = 0; mi < models.size(); ++mi)
   {
-    const Model& model = models[mi];
+    const Model &model = models[mi];
     // best per row in bold
     double bestEn = 1e30, bestEv = 1e30;
     for(std::size_t k : method_index)
@@ -381,7 +417,7 @@ int main(int argc, char** argv)
   for(std::size_t k = 0; k < method_index.size(); ++k)
     md << "---|";
   md << "\n";
-  for(const Model& model : models)
+  for(const Model &model : models)
   {
     md << "| " << model.name << " | E_n |";
     for(std::size_t k : method_index)
@@ -404,9 +440,9 @@ int main(int argc, char** argv)
   for(std::size_t mi = 0; mi < models.size(); ++mi)
     for(std::size_t k : method_index)
     {
-      const Method& method = all_methods[k];
-      md << "| " << models[mi].name << " | " << method.name << " | " << method.describe(results[mi][k].setting)
-         << " | " << (models[mi].large ? method.large_grid : method.grid).size() << " |\n";
+      const Method &method = all_methods[k];
+      md << "| " << models[mi].name << " | " << method.name << " | " << method.describe(results[mi][k].setting) << " | "
+         << (models[mi].large ? method.large_grid : method.grid).size() << " |\n";
     }
   std::snprintf(buf, sizeof(buf), "\nTotal run time: %.0f s\n",
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

@@ -10,7 +10,7 @@ using namespace classic_test;
 
 TEST(L0Denoising, NoisyPlaneBecomesFlat)
 {
-  const Errors e = noisy_plane("HS13", [](Mesh& m) { PMP::l0_denoising(m); });
+  const Errors e = noisy_plane("HS13", [](Mesh &m) { PMP::l0_denoising(m); });
   EXPECT_GT(e.before, 15.);
   EXPECT_LT(e.after, e.before / 20.);
 }
@@ -21,12 +21,11 @@ TEST(L0Denoising, NoisyPlaneBecomesFlat)
 // factor (1.15) E_n 0.41 deg, E_v 2.2e-3; with 0.02, E_n 1.9e-7 deg.
 TEST(L0Denoising, NoiseFreeCubeKeepsItsEdges)
 {
-  const Errors e = noise_free_cube("HS13", [](Mesh& m) { PMP::l0_denoising(m); });
+  const Errors e = noise_free_cube("HS13", [](Mesh &m) { PMP::l0_denoising(m); });
   EXPECT_LT(e.before, 0.45);
   EXPECT_LT(e.after, 2.5e-3);
-  const Errors small = noise_free_cube("HS13 (lambda factor 0.02)", [](Mesh& m) {
-    PMP::l0_denoising(m, CGAL::parameters::l0_weight(0.02));
-  });
+  const Errors small = noise_free_cube("HS13 (lambda factor 0.02)",
+                                       [](Mesh &m) { PMP::l0_denoising(m, CGAL::parameters::l0_weight(0.02)); });
   EXPECT_LT(small.before, 1e-5);
   EXPECT_LT(small.after, 1e-7);
 }
@@ -44,7 +43,7 @@ TEST(L0Denoising, EdgeOperatorVanishesOnCoplanarTriangles)
     value = value + c[k] * p[k];
   EXPECT_LT(D::norm(value), 1e-15);
   EXPECT_NEAR(c[0] + c[1] + c[2] + c[3], 0., 1e-15); // translation invariant
-  p[3][2] = 1.; // fold: D becomes non-zero, along z
+  p[3][2] = 1.;                                      // fold: D becomes non-zero, along z
   ASSERT_TRUE(D::edge_operator(p, e, c));
   value = {0., 0., 0.};
   for(int k = 0; k < 4; ++k)
@@ -54,7 +53,7 @@ TEST(L0Denoising, EdgeOperatorVanishesOnCoplanarTriangles)
 
 TEST(L0Denoising, SurfaceMeshAndPolyhedronGiveTheSameResult)
 {
-  EXPECT_LE(surface_mesh_vs_polyhedron([](auto& m) { PMP::l0_denoising(m); }), 1e-12);
+  EXPECT_LE(surface_mesh_vs_polyhedron([](auto &m) { PMP::l0_denoising(m); }), 1e-12);
 }
 
 TEST(L0Denoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
@@ -71,8 +70,8 @@ TEST(L0Denoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
 #ifdef CGAL_LINKED_WITH_TBB
 TEST(L0Denoising, ParallelEqualsSequential)
 {
-  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::l0_denoising<CGAL::Sequential_tag>(m); },
-                                   [](Mesh& m) { PMP::l0_denoising<CGAL::Parallel_tag>(m); }),
+  EXPECT_EQ(parallel_vs_sequential([](Mesh &m) { PMP::l0_denoising<CGAL::Sequential_tag>(m); },
+                                   [](Mesh &m) { PMP::l0_denoising<CGAL::Parallel_tag>(m); }),
             0.);
 }
 #endif

@@ -16,8 +16,10 @@
 #include <cmath>
 #include <vector>
 
-namespace CGAL {
-namespace Polygon_mesh_processing {
+namespace CGAL
+{
+namespace Polygon_mesh_processing
+{
 
 /*!
   \ingroup PMP_denoising_grp
@@ -69,13 +71,13 @@ namespace Polygon_mesh_processing {
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
-void bilateral_mesh_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::default_values())
+void bilateral_mesh_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::default_values())
 {
   namespace D = internal::Denoising;
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using parameters::is_default_parameter;
-  static const char* fname = "bilateral_mesh_denoising()";
+  static const char *fname = "bilateral_mesh_denoising()";
   if(faces(tmesh).empty())
     return;
   const double relative_sigma_c = choose_parameter(get_parameter(np, internal_np::sigma_spatial), 1.);
@@ -97,44 +99,47 @@ void bilateral_mesh_denoising(TriangleMesh& tmesh, const NamedParameters& np = p
   for(unsigned int it = 0; it < iterations; ++it)
   {
     const std::vector<D::Vec3> normals = D::area_weighted_vertex_normals(mesh);
-    const D::Csr neighbors = D::geometric_neighborhoods<ConcurrencyTag>(
-        mesh.points, D::Vertex_edge_adjacency{adjacency}, 2. * sigma_c);
-    const std::vector<D::Vec3>& p = mesh.points;
-    D::for_each_chunk<ConcurrencyTag>(p.size(), [&](std::size_t b, std::size_t e) {
-      for(std::size_t v = b; v < e; ++v)
-      {
-        next[v] = p[v];
-        const std::uint32_t kb = neighbors.begin(v), ke = neighbors.end(v);
-        if((!fixed.empty() && fixed[v]) || kb == ke || D::squared_norm(normals[v]) == 0.)
-          continue;
-        double s = sigma_s;
-        if(adaptive)
+    const D::Csr neighbors =
+        D::geometric_neighborhoods<ConcurrencyTag>(mesh.points, D::Vertex_edge_adjacency{adjacency}, 2. * sigma_c);
+    const std::vector<D::Vec3> &p = mesh.points;
+    D::for_each_chunk<ConcurrencyTag>(
+        p.size(),
+        [&](std::size_t b, std::size_t e)
         {
-          double sum = 0., sum2 = 0.;
-          for(std::uint32_t k = kb; k < ke; ++k)
+          for(std::size_t v = b; v < e; ++v)
           {
-            const double h = D::dot(normals[v], p[neighbors.items[k]] - p[v]);
-            sum += h;
-            sum2 += h * h;
+            next[v] = p[v];
+            const std::uint32_t kb = neighbors.begin(v), ke = neighbors.end(v);
+            if((!fixed.empty() && fixed[v]) || kb == ke || D::squared_norm(normals[v]) == 0.)
+              continue;
+            double s = sigma_s;
+            if(adaptive)
+            {
+              double sum = 0., sum2 = 0.;
+              for(std::uint32_t k = kb; k < ke; ++k)
+              {
+                const double h = D::dot(normals[v], p[neighbors.items[k]] - p[v]);
+                sum += h;
+                sum2 += h * h;
+              }
+              const double mean = sum / double(ke - kb);
+              s = std::sqrt((std::max)(0., sum2 / double(ke - kb) - mean * mean));
+            }
+            double num = 0., den = 0.;
+            for(std::uint32_t k = kb; k < ke; ++k)
+            {
+              const D::Vec3 d = p[neighbors.items[k]] - p[v];
+              const double t2 = D::squared_norm(d);
+              const double h = D::dot(normals[v], d);
+              // with a zero sigma_s (all offsets equal) the range weight is 1
+              const double w = std::exp(-t2 / (2. * sigma_c * sigma_c) - (s > 0. ? h * h / (2. * s * s) : 0.));
+              num += w * h;
+              den += w;
+            }
+            if(den > 0.)
+              next[v] = p[v] + (num / den) * normals[v];
           }
-          const double mean = sum / double(ke - kb);
-          s = std::sqrt((std::max)(0., sum2 / double(ke - kb) - mean * mean));
-        }
-        double num = 0., den = 0.;
-        for(std::uint32_t k = kb; k < ke; ++k)
-        {
-          const D::Vec3 d = p[neighbors.items[k]] - p[v];
-          const double t2 = D::squared_norm(d);
-          const double h = D::dot(normals[v], d);
-          // with a zero sigma_s (all offsets equal) the range weight is 1
-          const double w = std::exp(-t2 / (2. * sigma_c * sigma_c) - (s > 0. ? h * h / (2. * s * s) : 0.));
-          num += w * h;
-          den += w;
-        }
-        if(den > 0.)
-          next[v] = p[v] + (num / den) * normals[v];
-      }
-    });
+        });
     mesh.points.swap(next);
   }
   maps.write_points(tmesh, mesh.points);

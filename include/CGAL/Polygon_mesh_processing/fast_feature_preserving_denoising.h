@@ -14,8 +14,10 @@
 
 #include <vector>
 
-namespace CGAL {
-namespace Polygon_mesh_processing {
+namespace CGAL
+{
+namespace Polygon_mesh_processing
+{
 
 /*!
   \ingroup PMP_denoising_grp
@@ -42,10 +44,8 @@ namespace Polygon_mesh_processing {
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{normal_threshold}
-      \cgalParamDescription{\f$T\f$: neighbours with \f$n_i\cdot n_j \le T\f$ get no weight (larger: sharper features kept, less smoothing)}
-      \cgalParamType{double in [0, 1)}
-      \cgalParamDefault{`0.5`}
-    \cgalParamNEnd
+      \cgalParamDescription{\f$T\f$: neighbours with \f$n_i\cdot n_j \le T\f$ get no weight (larger: sharper features
+  kept, less smoothing)} \cgalParamType{double in [0, 1)} \cgalParamDefault{`0.5`} \cgalParamNEnd
     \cgalParamNBegin{use_vertex_neighborhood}
       \cgalParamDescription{if `true`, \f$N_i\f$ is the faces sharing a vertex with face \f$i\f$; if `false`, an edge}
       \cgalParamType{bool}
@@ -63,14 +63,10 @@ namespace Polygon_mesh_processing {
     \cgalParamNEnd
     \cgalParamNBegin{face_normal_map}
       \cgalParamDescription{if given, receives the filtered normals of the last pass}
-      \cgalParamType{a model of `WritablePropertyMap` with face descriptors as keys and `GeomTraits::Vector_3` as values}
-      \cgalParamDefault{unused}
-    \cgalParamNEnd
-    \cgalParamNBegin{vertex_is_constrained_map}
-      \cgalParamDescription{a property map telling which vertices never move}
-      \cgalParamType{a model of `ReadablePropertyMap` with vertex descriptors as keys and `bool` as values}
-      \cgalParamDefault{no vertex is constrained}
-    \cgalParamNEnd
+      \cgalParamType{a model of `WritablePropertyMap` with face descriptors as keys and `GeomTraits::Vector_3` as
+  values} \cgalParamDefault{unused} \cgalParamNEnd \cgalParamNBegin{vertex_is_constrained_map} \cgalParamDescription{a
+  property map telling which vertices never move} \cgalParamType{a model of `ReadablePropertyMap` with vertex
+  descriptors as keys and `bool` as values} \cgalParamDefault{no vertex is constrained} \cgalParamNEnd
     \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map, geom_traits}
       \cgalParamDescription{as for `intrinsic_denoising()`}
     \cgalParamNEnd
@@ -81,12 +77,12 @@ namespace Polygon_mesh_processing {
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
-void fast_feature_preserving_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::default_values())
+void fast_feature_preserving_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::default_values())
 {
   namespace D = internal::Denoising;
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  static const char* fname = "fast_feature_preserving_denoising()";
+  static const char *fname = "fast_feature_preserving_denoising()";
   if(faces(tmesh).empty())
     return;
   const double threshold = choose_parameter(get_parameter(np, internal_np::normal_threshold), 0.5);
@@ -100,25 +96,29 @@ void fast_feature_preserving_denoising(TriangleMesh& tmesh, const NamedParameter
   const std::vector<char> fixed = maps.constrained(tmesh);
   const D::Csr neighbors = D::topological_face_neighbors(mesh, vertex_ring ? 1 : 2);
 
-  auto filter = [&](const D::Face_data& fd, std::vector<D::Vec3>& out) {
-    const std::vector<D::Vec3>& n = fd.normals;
+  auto filter = [&](const D::Face_data &fd, std::vector<D::Vec3> &out)
+  {
+    const std::vector<D::Vec3> &n = fd.normals;
     out.resize(n.size());
-    D::for_each_chunk<ConcurrencyTag>(n.size(), [&](std::size_t b, std::size_t e) {
-      for(std::size_t i = b; i < e; ++i)
-      {
-        const double self = 1. - threshold;
-        D::Vec3 sum = (self * self) * n[i];
-        for(std::uint32_t k = neighbors.begin(i); k < neighbors.end(i); ++k)
-        {
-          const D::Vec3& nj = n[neighbors.items[k]];
-          const double x = D::dot(n[i], nj) - threshold;
-          if(x > 0.)
-            sum = sum + (x * x) * nj;
-        }
-        const double len = D::norm(sum);
-        out[i] = len > 0. ? (1. / len) * sum : n[i]; // a degenerate face keeps its zero normal
-      }
-    });
+    D::for_each_chunk<ConcurrencyTag>(n.size(),
+                                      [&](std::size_t b, std::size_t e)
+                                      {
+                                        for(std::size_t i = b; i < e; ++i)
+                                        {
+                                          const double self = 1. - threshold;
+                                          D::Vec3 sum = (self * self) * n[i];
+                                          for(std::uint32_t k = neighbors.begin(i); k < neighbors.end(i); ++k)
+                                          {
+                                            const D::Vec3 &nj = n[neighbors.items[k]];
+                                            const double x = D::dot(n[i], nj) - threshold;
+                                            if(x > 0.)
+                                              sum = sum + (x * x) * nj;
+                                          }
+                                          const double len = D::norm(sum);
+                                          out[i] = len > 0. ? (1. / len) * sum
+                                                            : n[i]; // a degenerate face keeps its zero normal
+                                        }
+                                      });
   };
   const std::vector<D::Vec3> filtered =
       D::normal_filtering_scheme<ConcurrencyTag>(mesh, fixed, iterations, vertex_iterations, filter);

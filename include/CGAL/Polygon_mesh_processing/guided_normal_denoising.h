@@ -17,10 +17,14 @@
 #include <algorithm>
 #include <vector>
 
-namespace CGAL {
-namespace Polygon_mesh_processing {
-namespace internal {
-namespace Denoising {
+namespace CGAL
+{
+namespace Polygon_mesh_processing
+{
+namespace internal
+{
+namespace Denoising
+{
 
 // Guidance normals of Zhang et al. 2015. The patch P_j of a face j is j and
 // the faces sharing a vertex with it (`ring`). Its consistency is
@@ -30,55 +34,60 @@ namespace Denoising {
 // the normalised area-weighted mean normal of the patch of least H among the
 // patches P_j containing i (j = i or j in ring(i)).
 template <typename ConcurrencyTag>
-void guidance_normals(const Csr& ring, const Csr& edge_neighbors, const Face_data& fd, std::vector<Vec3>& guidance,
-                      std::vector<double>& consistency, std::vector<Vec3>& patch_mean)
+void guidance_normals(const Csr &ring, const Csr &edge_neighbors, const Face_data &fd, std::vector<Vec3> &guidance,
+                      std::vector<double> &consistency, std::vector<Vec3> &patch_mean)
 {
   const std::size_t nf = fd.normals.size();
-  const std::vector<Vec3>& n = fd.normals;
+  const std::vector<Vec3> &n = fd.normals;
   consistency.resize(nf);
   patch_mean.resize(nf);
   guidance.resize(nf);
   const double eps = 1e-9;
-  for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
-    std::vector<std::uint32_t> patch;
-    for(std::size_t j = b; j < e; ++j)
-    {
-      patch.assign(1, std::uint32_t(j));
-      patch.insert(patch.end(), ring.items.begin() + ring.begin(j), ring.items.begin() + ring.end(j));
-      double max_difference = 0., max_edge = 0., sum_edge = 0.;
-      Vec3 mean = {0., 0., 0.};
-      for(std::size_t x = 0; x < patch.size(); ++x)
-      {
-        const std::uint32_t a = patch[x];
-        mean = mean + fd.areas[a] * n[a];
-        for(std::size_t y = x + 1; y < patch.size(); ++y)
-          max_difference = (std::max)(max_difference, squared_norm(n[a] - n[patch[y]]));
-        for(std::uint32_t k = edge_neighbors.begin(a); k < edge_neighbors.end(a); ++k)
-        {
-          const std::uint32_t c = edge_neighbors.items[k];
-          if(c > a && std::find(patch.begin(), patch.end(), c) != patch.end())
-          {
-            const double phi = norm(n[a] - n[c]);
-            max_edge = (std::max)(max_edge, phi);
-            sum_edge += phi;
-          }
-        }
-      }
-      consistency[j] = std::sqrt(max_difference) * max_edge / (eps + sum_edge);
-      const double len = norm(mean);
-      patch_mean[j] = len > 0. ? (1. / len) * mean : n[j];
-    }
-  });
-  for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
-    for(std::size_t i = b; i < e; ++i)
-    {
-      std::size_t best = i;
-      for(std::uint32_t k = ring.begin(i); k < ring.end(i); ++k)
-        if(consistency[ring.items[k]] < consistency[best])
-          best = ring.items[k];
-      guidance[i] = patch_mean[best];
-    }
-  });
+  for_each_chunk<ConcurrencyTag>(nf,
+                                 [&](std::size_t b, std::size_t e)
+                                 {
+                                   std::vector<std::uint32_t> patch;
+                                   for(std::size_t j = b; j < e; ++j)
+                                   {
+                                     patch.assign(1, std::uint32_t(j));
+                                     patch.insert(patch.end(), ring.items.begin() + ring.begin(j),
+                                                  ring.items.begin() + ring.end(j));
+                                     double max_difference = 0., max_edge = 0., sum_edge = 0.;
+                                     Vec3 mean = {0., 0., 0.};
+                                     for(std::size_t x = 0; x < patch.size(); ++x)
+                                     {
+                                       const std::uint32_t a = patch[x];
+                                       mean = mean + fd.areas[a] * n[a];
+                                       for(std::size_t y = x + 1; y < patch.size(); ++y)
+                                         max_difference = (std::max)(max_difference, squared_norm(n[a] - n[patch[y]]));
+                                       for(std::uint32_t k = edge_neighbors.begin(a); k < edge_neighbors.end(a); ++k)
+                                       {
+                                         const std::uint32_t c = edge_neighbors.items[k];
+                                         if(c > a && std::find(patch.begin(), patch.end(), c) != patch.end())
+                                         {
+                                           const double phi = norm(n[a] - n[c]);
+                                           max_edge = (std::max)(max_edge, phi);
+                                           sum_edge += phi;
+                                         }
+                                       }
+                                     }
+                                     consistency[j] = std::sqrt(max_difference) * max_edge / (eps + sum_edge);
+                                     const double len = norm(mean);
+                                     patch_mean[j] = len > 0. ? (1. / len) * mean : n[j];
+                                   }
+                                 });
+  for_each_chunk<ConcurrencyTag>(nf,
+                                 [&](std::size_t b, std::size_t e)
+                                 {
+                                   for(std::size_t i = b; i < e; ++i)
+                                   {
+                                     std::size_t best = i;
+                                     for(std::uint32_t k = ring.begin(i); k < ring.end(i); ++k)
+                                       if(consistency[ring.items[k]] < consistency[best])
+                                         best = ring.items[k];
+                                     guidance[i] = patch_mean[best];
+                                   }
+                                 });
 }
 
 } // namespace Denoising
@@ -114,21 +123,16 @@ void guidance_normals(const Csr& ring, const Csr& edge_neighbors, const Face_dat
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{sigma_spatial}
-      \cgalParamDescription{\f$\sigma_s\f$, as a multiple of \f$d\f$, the mean distance between the centroids of edge-adjacent faces of the input}
-      \cgalParamType{double}
-      \cgalParamDefault{`1`}
-    \cgalParamNEnd
+      \cgalParamDescription{\f$\sigma_s\f$, as a multiple of \f$d\f$, the mean distance between the centroids of
+  edge-adjacent faces of the input} \cgalParamType{double} \cgalParamDefault{`1`} \cgalParamNEnd
     \cgalParamNBegin{sigma_range}
       \cgalParamDescription{\f$\sigma_r\f$, on the guidance difference \f$\|g_i - g_j\|\f$}
       \cgalParamType{double}
       \cgalParamDefault{`0.35`}
     \cgalParamNEnd
     \cgalParamNBegin{relative_neighbor_radius}
-      \cgalParamDescription{the radius of \f$N_i\f$ as a multiple of \f$d\f$; ignored if `neighbor_radius` gives it absolutely}
-      \cgalParamType{double}
-      \cgalParamDefault{`2`}
-    \cgalParamNEnd
-    \cgalParamNBegin{number_of_iterations}
+      \cgalParamDescription{the radius of \f$N_i\f$ as a multiple of \f$d\f$; ignored if `neighbor_radius` gives it
+  absolutely} \cgalParamType{double} \cgalParamDefault{`2`} \cgalParamNEnd \cgalParamNBegin{number_of_iterations}
       \cgalParamDescription{the number of normal filtering passes}
       \cgalParamType{unsigned int}
       \cgalParamDefault{`20`}
@@ -138,10 +142,8 @@ void guidance_normals(const Csr& ring, const Csr& edge_neighbors, const Face_dat
       \cgalParamType{unsigned int}
       \cgalParamDefault{`10`}
     \cgalParamNEnd
-    \cgalParamNBegin{face_normal_map, vertex_is_constrained_map, vertex_point_map, vertex_index_map, face_index_map, geom_traits}
-      \cgalParamDescription{as for `fast_feature_preserving_denoising()`}
-    \cgalParamNEnd
-  \cgalNamedParamsEnd
+    \cgalParamNBegin{face_normal_map, vertex_is_constrained_map, vertex_point_map, vertex_index_map, face_index_map,
+  geom_traits} \cgalParamDescription{as for `fast_feature_preserving_denoising()`} \cgalParamNEnd \cgalNamedParamsEnd
 
   \pre `tmesh` is a triangle mesh with finite coordinates; the sigmas and the
        radius are positive and finite. Otherwise `std::invalid_argument` is
@@ -149,12 +151,12 @@ void guidance_normals(const Csr& ring, const Csr& edge_neighbors, const Face_dat
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
-void guided_normal_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::default_values())
+void guided_normal_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::default_values())
 {
   namespace D = internal::Denoising;
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  static const char* fname = "guided_normal_denoising()";
+  static const char *fname = "guided_normal_denoising()";
   if(faces(tmesh).empty())
     return;
   const double relative_sigma_s = choose_parameter(get_parameter(np, internal_np::sigma_spatial), 1.);
@@ -179,7 +181,8 @@ void guided_normal_denoising(TriangleMesh& tmesh, const NamedParameters& np = pa
 
   std::vector<D::Vec3> guidance, patch_mean;
   std::vector<double> consistency;
-  auto filter = [&](const D::Face_data& fd, std::vector<D::Vec3>& out) {
+  auto filter = [&](const D::Face_data &fd, std::vector<D::Vec3> &out)
+  {
     D::guidance_normals<ConcurrencyTag>(ring, edge_neighbors, fd, guidance, consistency, patch_mean);
     D::bilateral_normal_pass<ConcurrencyTag>(direct, fd, guidance, sigma_s, sigma_r, out);
   };

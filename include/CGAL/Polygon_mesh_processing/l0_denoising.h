@@ -23,10 +23,14 @@
 #include <string>
 #include <vector>
 
-namespace CGAL {
-namespace Polygon_mesh_processing {
-namespace internal {
-namespace Denoising {
+namespace CGAL
+{
+namespace Polygon_mesh_processing
+{
+namespace internal
+{
+namespace Denoising
+{
 
 // An interior edge (p1, p3) of two triangles (p1, p2, p3) and (p1, p3, p4).
 struct Interior_edge
@@ -35,12 +39,12 @@ struct Interior_edge
 };
 
 // The edges shared by exactly two faces, each once.
-inline std::vector<Interior_edge> interior_edges(const Flat_mesh& m)
+inline std::vector<Interior_edge> interior_edges(const Flat_mesh &m)
 {
   std::vector<Interior_edge> edges;
   for(std::uint32_t f = 0; f < m.number_of_faces(); ++f)
   {
-    const auto& t = m.triangles[f];
+    const auto &t = m.triangles[f];
     for(int k = 0; k < 3; ++k)
     {
       const std::uint32_t a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
@@ -50,7 +54,7 @@ inline std::vector<Interior_edge> interior_edges(const Flat_mesh& m)
         const std::uint32_t g = m.vertex_faces[i];
         if(g == f)
           continue;
-        const auto& u = m.triangles[g];
+        const auto &u = m.triangles[g];
         if(u[0] == b || u[1] == b || u[2] == b)
         {
           other = g;
@@ -72,7 +76,7 @@ inline std::vector<Interior_edge> interior_edges(const Flat_mesh& m)
 // h_k the component of p_k - p1 orthogonal to the edge direction p3 - p1 and
 // S the triangle areas. D(e) = 0 iff the two triangles are coplanar (and on
 // either side of the edge). Returns false for a degenerate edge.
-inline bool edge_operator(const std::vector<Vec3>& p, const Interior_edge& e, std::array<double, 4>& c)
+inline bool edge_operator(const std::vector<Vec3> &p, const Interior_edge &e, std::array<double, 4> &c)
 {
   const Vec3 d = p[e.p3] - p[e.p1];
   const double len2 = squared_norm(d);
@@ -133,15 +137,10 @@ inline bool edge_operator(const std::vector<Vec3>& p, const Interior_edge& e, st
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{l0_weight}
-      \cgalParamDescription{the factor \f$c\f$ of \f$\lambda = c\,\bar l^2\bar\gamma\f$, \f$\bar\gamma\f$ in radians (larger: fewer, sharper features, flatter result)}
-      \cgalParamType{double}
-      \cgalParamDefault{`0.02 * 180 / pi` (about 1.15)}
-    \cgalParamNEnd
-    \cgalParamNBegin{regularization_weight}
-      \cgalParamDescription{the factor \f$a\f$ of \f$\alpha_0 = a\,\bar\gamma\f$}
-      \cgalParamType{double}
-      \cgalParamDefault{`0.1`}
-    \cgalParamNEnd
+      \cgalParamDescription{the factor \f$c\f$ of \f$\lambda = c\,\bar l^2\bar\gamma\f$, \f$\bar\gamma\f$ in radians
+  (larger: fewer, sharper features, flatter result)} \cgalParamType{double} \cgalParamDefault{`0.02 * 180 / pi`
+  (about 1.15)} \cgalParamNEnd \cgalParamNBegin{regularization_weight} \cgalParamDescription{the factor \f$a\f$ of
+  \f$\alpha_0 = a\,\bar\gamma\f$} \cgalParamType{double} \cgalParamDefault{`0.1`} \cgalParamNEnd
     \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map, geom_traits}
       \cgalParamDescription{as for `intrinsic_denoising()`}
     \cgalParamNEnd
@@ -154,17 +153,18 @@ inline bool edge_operator(const std::vector<Vec3>& p, const Interior_edge& e, st
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
-void l0_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::default_values())
+void l0_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::default_values())
 {
   namespace D = internal::Denoising;
   using parameters::choose_parameter;
   using parameters::get_parameter;
   typedef Eigen::SparseMatrix<double> Sparse;
   typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Sparse>> Solver;
-  static const char* fname = "l0_denoising()";
+  static const char *fname = "l0_denoising()";
   if(faces(tmesh).empty())
     return;
-  const double lambda_factor = choose_parameter(get_parameter(np, internal_np::l0_weight), 0.02 * 180. / 3.14159265358979323846);
+  const double lambda_factor =
+      choose_parameter(get_parameter(np, internal_np::l0_weight), 0.02 * 180. / 3.14159265358979323846);
   const double alpha_factor = choose_parameter(get_parameter(np, internal_np::regularization_weight), 0.1);
   D::require_positive(lambda_factor, fname, "l0_weight");
   D::require_positive(alpha_factor, fname, "regularization_weight");
@@ -176,7 +176,7 @@ void l0_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::d
   if(ne == 0)
     return;
   const std::vector<D::Vec3> input = mesh.points;
-  std::vector<D::Vec3>& p = mesh.points;
+  std::vector<D::Vec3> &p = mesh.points;
 
   // mean dihedral angle and edge length of the input
   D::Face_data fd;
@@ -230,7 +230,7 @@ void l0_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::d
       valid[e] = D::edge_operator(p, edges[e], coefficients[e]) ? 1 : 0;
       if(!valid[e])
         continue;
-      const auto& c = coefficients[e];
+      const auto &c = coefficients[e];
       const std::uint32_t ids[4] = {edges[e].p1, edges[e].p2, edges[e].p3, edges[e].p4};
       D::Vec3 value = {0., 0., 0.};
       for(int k = 0; k < 4; ++k)

@@ -16,8 +16,10 @@
 #include <cmath>
 #include <vector>
 
-namespace CGAL {
-namespace Polygon_mesh_processing {
+namespace CGAL
+{
+namespace Polygon_mesh_processing
+{
 
 /*!
   \ingroup PMP_denoising_grp
@@ -26,10 +28,9 @@ namespace Polygon_mesh_processing {
   Jones, Durand and Desbrun (2003) [JDD03].
 
   Every vertex \f$p\f$ moves to
-  \f[ p' = \frac{\sum_q \Pi_q(p)\, a_q\, f(\|c_q - p\|)\, g(\|\Pi_q(p) - p\|)}{\sum_q a_q\, f(\|c_q - p\|)\, g(\|\Pi_q(p) - p\|)},
-      \qquad \Pi_q(p) = p + ((c_q - p)\cdot \tilde n_q)\,\tilde n_q, \f]
-  over the triangles \f$q\f$ (area \f$a_q\f$, centroid \f$c_q\f$) connected to
-  \f$p\f$ whose centroid lies within \f$2\sigma_f\f$ of \f$p\f$, with
+  \f[ p' = \frac{\sum_q \Pi_q(p)\, a_q\, f(\|c_q - p\|)\, g(\|\Pi_q(p) - p\|)}{\sum_q a_q\, f(\|c_q - p\|)\,
+  g(\|\Pi_q(p) - p\|)}, \qquad \Pi_q(p) = p + ((c_q - p)\cdot \tilde n_q)\,\tilde n_q, \f] over the triangles \f$q\f$
+  (area \f$a_q\f$, centroid \f$c_q\f$) connected to \f$p\f$ whose centroid lies within \f$2\sigma_f\f$ of \f$p\f$, with
   Gaussians \f$f\f$ (width \f$\sigma_f\f$, spatial) and \f$g\f$ (width
   \f$\sigma_g\f$, influence). \f$\Pi_q(p)\f$ is the prediction of \f$p\f$ by
   the tangent plane of \f$q\f$. The normals \f$\tilde n_q\f$ are mollified:
@@ -72,12 +73,12 @@ namespace Polygon_mesh_processing {
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
-void non_iterative_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::default_values())
+void non_iterative_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::default_values())
 {
   namespace D = internal::Denoising;
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  static const char* fname = "non_iterative_denoising()";
+  static const char *fname = "non_iterative_denoising()";
   if(faces(tmesh).empty())
     return;
   const double relative_sigma_f = choose_parameter(get_parameter(np, internal_np::sigma_spatial), 2.);
@@ -99,51 +100,59 @@ void non_iterative_denoising(TriangleMesh& tmesh, const NamedParameters& np = pa
   D::Face_data fd, mollified_faces;
   for(unsigned int it = 0; it < iterations; ++it)
   {
-    const std::vector<D::Vec3>& p = mesh.points;
+    const std::vector<D::Vec3> &p = mesh.points;
     D::compute_face_data<ConcurrencyTag>(mesh, p, fd);
     // mollification: vertices smoothed by the spatial Gaussian of width sigma_f / 2
     const D::Csr near_m = D::vertex_face_neighborhoods(mesh, p, fd.centroids, 2. * sigma_m);
-    D::for_each_chunk<ConcurrencyTag>(nv, [&](std::size_t b, std::size_t e) {
-      for(std::size_t v = b; v < e; ++v)
-      {
-        D::Vec3 sum = {0., 0., 0.};
-        double den = 0.;
-        for(std::uint32_t k = near_m.begin(v); k < near_m.end(v); ++k)
-        {
-          const std::uint32_t q = near_m.items[k];
-          const double w = fd.areas[q] * std::exp(-D::squared_norm(fd.centroids[q] - p[v]) / (2. * sigma_m * sigma_m));
-          sum = sum + w * fd.centroids[q];
-          den += w;
-        }
-        mollified[v] = den > 0. ? (1. / den) * sum : p[v];
-      }
-    });
+    D::for_each_chunk<ConcurrencyTag>(nv,
+                                      [&](std::size_t b, std::size_t e)
+                                      {
+                                        for(std::size_t v = b; v < e; ++v)
+                                        {
+                                          D::Vec3 sum = {0., 0., 0.};
+                                          double den = 0.;
+                                          for(std::uint32_t k = near_m.begin(v); k < near_m.end(v); ++k)
+                                          {
+                                            const std::uint32_t q = near_m.items[k];
+                                            const double w =
+                                                fd.areas[q] * std::exp(-D::squared_norm(fd.centroids[q] - p[v]) /
+                                                                       (2. * sigma_m * sigma_m));
+                                            sum = sum + w * fd.centroids[q];
+                                            den += w;
+                                          }
+                                          mollified[v] = den > 0. ? (1. / den) * sum : p[v];
+                                        }
+                                      });
     D::compute_face_data<ConcurrencyTag>(mesh, mollified, mollified_faces);
-    const std::vector<D::Vec3>& nq = mollified_faces.normals;
+    const std::vector<D::Vec3> &nq = mollified_faces.normals;
 
     const D::Csr near = D::vertex_face_neighborhoods(mesh, p, fd.centroids, 2. * sigma_f);
-    D::for_each_chunk<ConcurrencyTag>(nv, [&](std::size_t b, std::size_t e) {
-      for(std::size_t v = b; v < e; ++v)
-      {
-        next[v] = p[v];
-        if(!fixed.empty() && fixed[v])
-          continue;
-        D::Vec3 sum = {0., 0., 0.};
-        double den = 0.;
-        for(std::uint32_t k = near.begin(v); k < near.end(v); ++k)
-        {
-          const std::uint32_t q = near.items[k];
-          const double offset = D::dot(fd.centroids[q] - p[v], nq[q]);
-          const D::Vec3 prediction = p[v] + offset * nq[q];
-          const double w = fd.areas[q] * std::exp(-D::squared_norm(fd.centroids[q] - p[v]) / (2. * sigma_f * sigma_f) -
-                                                   offset * offset / (2. * sigma_g * sigma_g));
-          sum = sum + w * prediction;
-          den += w;
-        }
-        if(den > 0.)
-          next[v] = (1. / den) * sum;
-      }
-    });
+    D::for_each_chunk<ConcurrencyTag>(nv,
+                                      [&](std::size_t b, std::size_t e)
+                                      {
+                                        for(std::size_t v = b; v < e; ++v)
+                                        {
+                                          next[v] = p[v];
+                                          if(!fixed.empty() && fixed[v])
+                                            continue;
+                                          D::Vec3 sum = {0., 0., 0.};
+                                          double den = 0.;
+                                          for(std::uint32_t k = near.begin(v); k < near.end(v); ++k)
+                                          {
+                                            const std::uint32_t q = near.items[k];
+                                            const double offset = D::dot(fd.centroids[q] - p[v], nq[q]);
+                                            const D::Vec3 prediction = p[v] + offset * nq[q];
+                                            const double w =
+                                                fd.areas[q] * std::exp(-D::squared_norm(fd.centroids[q] - p[v]) /
+                                                                           (2. * sigma_f * sigma_f) -
+                                                                       offset * offset / (2. * sigma_g * sigma_g));
+                                            sum = sum + w * prediction;
+                                            den += w;
+                                          }
+                                          if(den > 0.)
+                                            next[v] = (1. / den) * sum;
+                                        }
+                                      });
     mesh.points.swap(next);
   }
   maps.write_points(tmesh, mesh.points);

@@ -22,14 +22,18 @@
 #include <cstdint>
 #include <vector>
 
-namespace CGAL {
-namespace Polygon_mesh_processing {
-namespace internal {
-namespace Denoising {
+namespace CGAL
+{
+namespace Polygon_mesh_processing
+{
+namespace internal
+{
+namespace Denoising
+{
 
 // The faces sharing at least `shared` vertices with each face (2: an edge, 1:
 // a vertex), face itself excluded, in increasing index order.
-inline Csr topological_face_neighbors(const Flat_mesh& m, int shared)
+inline Csr topological_face_neighbors(const Flat_mesh &m, int shared)
 {
   const std::size_t nf = m.number_of_faces();
   Csr csr;
@@ -61,8 +65,8 @@ inline Csr topological_face_neighbors(const Flat_mesh& m, int shared)
 // For each vertex v, the faces whose centroid lies within `radius` of v and
 // that are connected to v through faces of that kind (a breadth-first search
 // from v's incident faces through shared vertices).
-inline Csr vertex_face_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>& points,
-                                     const std::vector<Vec3>& centroids, double radius)
+inline Csr vertex_face_neighborhoods(const Flat_mesh &m, const std::vector<Vec3> &points,
+                                     const std::vector<Vec3> &centroids, double radius)
 {
   const std::size_t nv = m.number_of_vertices();
   const double r2 = radius * radius;
@@ -73,8 +77,9 @@ inline Csr vertex_face_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>
   for(std::uint32_t v = 0; v < nv; ++v)
   {
     queue.clear();
-    const Vec3& p = points[v];
-    auto visit = [&](std::uint32_t g) {
+    const Vec3 &p = points[v];
+    auto visit = [&](std::uint32_t g)
+    {
       if(stamp[g] == v)
         return;
       stamp[g] = v;
@@ -98,8 +103,8 @@ inline Csr vertex_face_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>
 // of eq. 10. Works on `mesh.points`; writes nothing to the user's mesh.
 // Returns the filtered normals of the last pass (empty if no pass).
 template <typename ConcurrencyTag, typename Filter>
-std::vector<Vec3> normal_filtering_scheme(Flat_mesh& mesh, const std::vector<char>& fixed, unsigned int iterations,
-                                          unsigned int vertex_iterations, Filter& filter)
+std::vector<Vec3> normal_filtering_scheme(Flat_mesh &mesh, const std::vector<char> &fixed, unsigned int iterations,
+                                          unsigned int vertex_iterations, Filter &filter)
 {
   Face_data current;
   std::vector<Vec3> filtered, centroids, next;
@@ -115,8 +120,8 @@ std::vector<Vec3> normal_filtering_scheme(Flat_mesh& mesh, const std::vector<cha
 // Writes the result of a normal-filtering denoiser to the user's mesh (once)
 // and, if asked for, the filtered normals of the last pass.
 template <typename TriangleMesh, typename NamedParameters, typename Maps>
-void write_normal_filtering_result(TriangleMesh& tmesh, const NamedParameters& np, const Maps& maps,
-                                   const Flat_mesh& mesh, const std::vector<Vec3>& filtered)
+void write_normal_filtering_result(TriangleMesh &tmesh, const NamedParameters &np, const Maps &maps,
+                                   const Flat_mesh &mesh, const std::vector<Vec3> &filtered)
 {
   maps.write_points(tmesh, mesh.points);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
@@ -133,8 +138,8 @@ void write_normal_filtering_result(TriangleMesh& tmesh, const NamedParameters& n
 // Face i takes part with weight A_i (both kernels are 1 at distance 0). A
 // face whose sum vanishes keeps its normal.
 template <typename ConcurrencyTag>
-void bilateral_normal_pass(const Path_forest& direct, const Face_data& fd, const std::vector<Vec3>& guidance,
-                           double sigma_spatial, double sigma_range, std::vector<Vec3>& out)
+void bilateral_normal_pass(const Path_forest &direct, const Face_data &fd, const std::vector<Vec3> &guidance,
+                           double sigma_spatial, double sigma_range, std::vector<Vec3> &out)
 {
   Intrinsic_kernel kernel;
   kernel.sigma_spatial = sigma_spatial;
@@ -142,29 +147,28 @@ void bilateral_normal_pass(const Path_forest& direct, const Face_data& fd, const
   kernel.spatial_exponent = kernel.range_exponent = 2.;
   kernel.include_self = true;
   out.resize(fd.normals.size());
-  const auto centroid_sq = [&fd](std::uint32_t a, std::uint32_t b) {
-    return squared_norm(fd.centroids[a] - fd.centroids[b]);
-  };
-  const auto guidance_sq = [&guidance](std::uint32_t a, std::uint32_t b) {
-    return squared_norm(guidance[a] - guidance[b]);
-  };
-  intrinsic_weights_pass<ConcurrencyTag>(
-      direct, kernel, centroid_sq, guidance_sq, [&](std::size_t i, std::uint32_t b, std::uint32_t e, const double* w) {
-        Vec3 sum = fd.areas[i] * fd.normals[i];
-        for(std::uint32_t k = b; k < e; ++k)
-        {
-          const std::uint32_t j = direct.face[k];
-          sum = sum + (fd.areas[j] * w[k - b]) * fd.normals[j];
-        }
-        const double len = norm(sum);
-        out[i] = (len > 0. && std::isfinite(len)) ? (1. / len) * sum : fd.normals[i];
-      });
+  const auto centroid_sq = [&fd](std::uint32_t a, std::uint32_t b)
+  { return squared_norm(fd.centroids[a] - fd.centroids[b]); };
+  const auto guidance_sq = [&guidance](std::uint32_t a, std::uint32_t b)
+  { return squared_norm(guidance[a] - guidance[b]); };
+  intrinsic_weights_pass<ConcurrencyTag>(direct, kernel, centroid_sq, guidance_sq,
+                                         [&](std::size_t i, std::uint32_t b, std::uint32_t e, const double *w)
+                                         {
+                                           Vec3 sum = fd.areas[i] * fd.normals[i];
+                                           for(std::uint32_t k = b; k < e; ++k)
+                                           {
+                                             const std::uint32_t j = direct.face[k];
+                                             sum = sum + (fd.areas[j] * w[k - b]) * fd.normals[j];
+                                           }
+                                           const double len = norm(sum);
+                                           out[i] = (len > 0. && std::isfinite(len)) ? (1. / len) * sum : fd.normals[i];
+                                         });
 }
 
 // The neighbourhood radius: neighbor_radius if given, else
 // relative_neighbor_radius (default `default_relative`) times `unit`.
 template <typename NamedParameters>
-double read_radius_or(const NamedParameters& np, const char* fname, double unit, double default_relative)
+double read_radius_or(const NamedParameters &np, const char *fname, double unit, double default_relative)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -180,7 +184,7 @@ double read_radius_or(const NamedParameters& np, const char* fname, double unit,
 }
 
 // Throws std::invalid_argument unless x is in [0, 1) and finite (thresholds).
-inline void require_unit_interval(double x, const char* function_name, const char* what)
+inline void require_unit_interval(double x, const char *function_name, const char *what)
 {
   if(!(x >= 0. && x < 1.))
     throw std::invalid_argument(std::string(function_name) + ": " + what + " must be in [0, 1) (got " +
