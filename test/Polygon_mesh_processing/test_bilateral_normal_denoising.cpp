@@ -80,3 +80,34 @@ TEST(BilateralNormalDenoising, FaceNormalMapReceivesUnitFilteredNormals)
     EXPECT_GT(mx, 0.9); // close to one axis of the cube
   }
 }
+
+// The engine with direct paths, phi = centroid, psi = normal, n = m = 2 gives
+// ZFAT11's weights A_j W_s(|c_i - c_j|) W_r(|n_i - n_j|), computed here by hand
+// for face 0 with neighbours 1 and 2 (and itself, weight A_0).
+TEST(BilateralNormalDenoising, EnginePassGivesTheHandComputedWeights)
+{
+  namespace D = PMP::internal::Denoising;
+  D::Csr neighbors;
+  neighbors.offsets = {0, 2, 2, 2};
+  neighbors.items = {1, 2};
+  const D::Path_forest direct = D::direct_paths(neighbors);
+  const double s = std::sqrt(0.5);
+  D::Face_data fd;
+  fd.normals = {{0, 0, 1}, {0, s, s}, {0, 1, 0}};
+  fd.areas = {1., 2., 3.};
+  fd.centroids = {{0, 0, 0}, {0.5, 0, 0}, {0, 1.5, 0}};
+  const double sigma_s = 0.8, sigma_r = 0.6;
+  std::vector<D::Vec3> out;
+  D::bilateral_normal_pass<CGAL::Sequential_tag>(direct, fd, fd.normals, sigma_s, sigma_r, out);
+  auto g = [](double x2, double sigma) { return std::exp(-x2 / (2 * sigma * sigma)); };
+  const double w1 = 2. * g(0.25, sigma_s) * g(2. - std::sqrt(2.), sigma_r); // |n1 - n0|^2 = 2 - sqrt 2
+  const double w2 = 3. * g(2.25, sigma_s) * g(2., sigma_r);                 // |n2 - n0|^2 = 2
+  const D::Vec3 sum = {0., w1 * s + w2, 1. + w1 * s};
+  const double len = D::norm(sum);
+  EXPECT_NEAR(out[0][0], 0., 1e-15);
+  EXPECT_NEAR(out[0][1], sum[1] / len, 1e-14);
+  EXPECT_NEAR(out[0][2], sum[2] / len, 1e-14);
+  // faces 1 and 2 have no neighbour: only their own term, their normal
+  EXPECT_NEAR(D::norm(out[1] - fd.normals[1]), 0., 1e-15);
+  EXPECT_NEAR(D::norm(out[2] - fd.normals[2]), 0., 1e-15);
+}

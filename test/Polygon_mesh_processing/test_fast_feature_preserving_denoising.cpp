@@ -1,5 +1,6 @@
 // Tests of fast_feature_preserving_denoising() (Sun et al. 2007).
 
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/fast_feature_preserving_denoising.h>
 
 #include "classic_test_helpers.h"
@@ -79,4 +80,36 @@ TEST(FastFeaturePreservingDenoising, FaceNormalMapReceivesUnitFilteredNormals)
     const double mx = (std::max)({std::abs(n.x()), std::abs(n.y()), std::abs(n.z())});
     EXPECT_GT(mx, 0.9); // close to one axis of the cube
   }
+}
+
+// Two faces folded by 60 degrees (n_0 . n_1 = 0.5): with T = 0.4 the neighbour
+// weighs (0.5 - 0.4)^2 = 0.01 against (1 - 0.4)^2 = 0.36 for the face itself;
+// with T = 0.5 it weighs 0. Checked on the filtered normals of one pass.
+TEST(FastFeaturePreservingDenoising, ThresholdWeightsByHand)
+{
+  const double pi = 3.14159265358979323846;
+  const K::Point_3 p0(0, 0, 0), p1(1, 0, 0), p2(0, 1, 0);
+  const K::Vector_3 n0(0, 0, 1);
+  const K::Vector_3 e = (p2 - p1) / std::sqrt((p2 - p1).squared_length());
+  const K::Vector_3 away = CGAL::cross_product(e, n0); // in face 0's plane, away from it
+  // face 1 = face 0's plane turned by 60 degrees about the shared edge p1 p2
+  const K::Point_3 p3 = p1 + 0.5 * (p2 - p1) + 0.7 * (std::cos(pi / 3) * away + std::sin(pi / 3) * n0);
+  Mesh mesh;
+  const auto v0 = mesh.add_vertex(p0), v1 = mesh.add_vertex(p1), v2 = mesh.add_vertex(p2), v3 = mesh.add_vertex(p3);
+  const auto f0 = mesh.add_face(v0, v1, v2), f1 = mesh.add_face(v1, v3, v2);
+  const K::Vector_3 n1 = PMP::compute_face_normal(f1, mesh);
+  ASSERT_NEAR(n0 * n1, 0.5, 1e-12);
+  auto fnm = mesh.add_property_map<Mesh::Face_index, K::Vector_3>("f:n", CGAL::NULL_VECTOR).first;
+
+  Mesh copy = mesh; // (the copy has its own "f:n")
+  auto copy_fnm = copy.property_map<Mesh::Face_index, K::Vector_3>("f:n").first;
+  PMP::fast_feature_preserving_denoising(
+      copy,
+      CGAL::parameters::normal_threshold(0.4).number_of_iterations(1).vertex_iterations(0).face_normal_map(copy_fnm));
+  const K::Vector_3 expected = 0.36 * n0 + 0.01 * n1;
+  EXPECT_LT(std::sqrt((get(copy_fnm, f0) - expected / std::sqrt(expected.squared_length())).squared_length()), 1e-12);
+
+  PMP::fast_feature_preserving_denoising(
+      mesh, CGAL::parameters::normal_threshold(0.5).number_of_iterations(1).vertex_iterations(0).face_normal_map(fnm));
+  EXPECT_LT(std::sqrt((get(fnm, f0) - n0).squared_length()), 1e-12);
 }
