@@ -67,11 +67,10 @@ TEST(L0Denoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
   EXPECT_TRUE(empty.is_empty());
 }
 
-#ifdef CGAL_LINKED_WITH_TBB
-TEST(L0Denoising, ParallelEqualsSequential)
+// (no Parallel_tag test: the solver is sequential and the tag unused)
+
+TEST(L0Denoising, ConstrainedVerticesDoNotMove)
 {
-  EXPECT_EQ(parallel_vs_sequential([](Mesh &m) { PMP::l0_denoising<CGAL::Sequential_tag>(m); },
-                                   [](Mesh &m) { PMP::l0_denoising<CGAL::Parallel_tag>(m); }),
-            0.);
+  constrained_vertices_do_not_move(
+      [](Mesh& m, auto pinned) { PMP::l0_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned)); });
 }
-#endif

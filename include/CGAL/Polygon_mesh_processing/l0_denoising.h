@@ -17,6 +17,7 @@
 
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -141,10 +142,9 @@ inline bool edge_operator(const std::vector<Vec3> &p, const Interior_edge &e, st
   (larger: fewer, sharper features, flatter result)} \cgalParamType{double} \cgalParamDefault{`0.02 * 180 / pi`
   (about 1.15)} \cgalParamNEnd \cgalParamNBegin{regularization_weight} \cgalParamDescription{the factor \f$a\f$ of
   \f$\alpha_0 = a\,\bar\gamma\f$} \cgalParamType{double} \cgalParamDefault{`0.1`} \cgalParamNEnd
-    \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map, geom_traits}
-      \cgalParamDescription{as for `intrinsic_denoising()`}
-    \cgalParamNEnd
-  \cgalNamedParamsEnd
+    \cgalParamNBegin{vertex_is_constrained_map, vertex_point_map, vertex_index_map, face_index_map, geom_traits}
+      \cgalParamDescription{as for `intrinsic_denoising()` (a constrained vertex keeps its input position in every
+  solve)} \cgalParamNEnd \cgalNamedParamsEnd
 
   \pre `tmesh` is a triangle mesh with finite coordinates; the weights are
        positive and finite. Otherwise `std::invalid_argument` is thrown; if the
@@ -176,6 +176,8 @@ void l0_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::d
   if(ne == 0)
     return;
   const std::vector<D::Vec3> input = mesh.points;
+  const std::vector<char> fixed = maps.constrained(tmesh);
+  const bool any_fixed = std::find(fixed.begin(), fixed.end(), char(1)) != fixed.end();
   std::vector<D::Vec3> &p = mesh.points;
 
   // mean dihedral angle and edge length of the input
@@ -217,6 +219,14 @@ void l0_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::d
   const Sparse RtR = Sparse(R.transpose()) * R;
   Sparse identity(static_cast<Eigen::Index>(nv), static_cast<Eigen::Index>(nv));
   identity.setIdentity();
+  Sparse pinned_identity(static_cast<Eigen::Index>(nv), static_cast<Eigen::Index>(nv));
+  {
+    std::vector<Eigen::Triplet<double>> diagonal;
+    for(std::size_t v = 0; v < nv; ++v)
+      if(fixed[v])
+        diagonal.emplace_back(int(v), int(v), 1.);
+    pinned_identity.setFromTriplets(diagonal.begin(), diagonal.end());
+  }
 
   std::vector<std::array<double, 4>> coefficients(ne);
   std::vector<char> valid(ne);
@@ -245,7 +255,22 @@ void l0_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::d
     Sparse Dm(static_cast<Eigen::Index>(ne), static_cast<Eigen::Index>(nv));
     Dm.setFromTriplets(triplets.begin(), triplets.end());
     const Sparse Dt = Dm.transpose();
-    const Solver::Matrix A(Sparse(identity + beta * (Dt * Dm) + alpha * RtR));
+    Sparse M = identity + beta * (Dt * Dm) + alpha * RtR;
+    // pinned vertices: p_v = input_v; their columns move to the right-hand side
+    Eigen::MatrixXd pinned_part = Eigen::MatrixXd::Zero(Eigen::Index(nv), 3);
+    if(any_fixed)
+    {
+      Eigen::MatrixXd pinned_positions = Eigen::MatrixXd::Zero(Eigen::Index(nv), 3);
+      for(std::size_t v = 0; v < nv; ++v)
+        if(fixed[v])
+          for(int x = 0; x < 3; ++x)
+            pinned_positions(Eigen::Index(v), x) = input[v][x];
+      pinned_part = M * pinned_positions;
+      M.prune([&fixed](const Eigen::Index &r, const Eigen::Index &c, const double &)
+              { return !fixed[std::size_t(r)] && !fixed[std::size_t(c)]; });
+      M += pinned_identity;
+    }
+    const Solver::Matrix A(M);
     Solver solver;
     double denominator = 1.;
     if(!solver.factor(A, denominator))
@@ -255,11 +280,13 @@ void l0_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::d
     {
       Solver::Vector b(static_cast<int>(nv)), sol(static_cast<int>(nv));
       for(std::size_t v = 0; v < nv; ++v)
-        b[Eigen::Index(v)] = input[v][x] + beta * rhs_delta(Eigen::Index(v), x);
+        b[Eigen::Index(v)] = fixed[v]
+                                 ? input[v][x]
+                                 : input[v][x] + beta * rhs_delta(Eigen::Index(v), x) - pinned_part(Eigen::Index(v), x);
       if(!solver.linear_solver(b, sol))
         throw std::runtime_error(std::string(fname) + ": the sparse solve failed.");
       for(std::size_t v = 0; v < nv; ++v)
-        p[v][x] = sol[Eigen::Index(v)];
+        p[v][x] = fixed[v] ? input[v][x] : sol[Eigen::Index(v)];
     }
   }
   maps.write_points(tmesh, p);
