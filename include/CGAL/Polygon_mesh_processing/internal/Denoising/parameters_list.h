@@ -34,3 +34,12 @@ CGAL_add_named_parameter(geodesic_patch_rings_t, geodesic_patch_rings, geodesic_
 // whether the vertex update (eq. 10) is restricted so that no face folds
 // (default true; false reproduces the paper's update exactly)
 CGAL_add_named_parameter(prevent_folds_t, prevent_folds, prevent_folds)
+// classic methods (issue 9)
+// T of Sun et al. 2007: faces whose normals make n_i . n_j <= T get no weight
+CGAL_add_named_parameter(normal_threshold_t, normal_threshold, normal_threshold)
+// normal filtering over the faces sharing a vertex (true) or an edge (false) with face i
+CGAL_add_named_parameter(use_vertex_neighborhood_t, use_vertex_neighborhood, use_vertex_neighborhood)
+// He and Schaefer 2013: lambda = l0_weight * (mean edge length)^2 * (mean dihedral angle)
+CGAL_add_named_parameter(l0_weight_t, l0_weight, l0_weight)
+// He and Schaefer 2013: initial alpha = regularization_weight * (mean dihedral angle)
+CGAL_add_named_parameter(regularization_weight_t, regularization_weight, regularization_weight)

@@ -1,0 +1,151 @@
+// Copyright (c) 2026 The intrinsic denoising package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// [FDC03] Fleishman, Drori, Cohen-Or: "Bilateral mesh denoising", ACM TOG
+// 22(3) (SIGGRAPH 2003). A classic method of the paper's Table 1: vertices
+// moved along their normals by a bilateral average of their neighbours'
+// offsets, iterated.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_BILATERAL_MESH_DENOISING_H
+#define CGAL_POLYGON_MESH_PROCESSING_BILATERAL_MESH_DENOISING_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/classic_methods.h>
+
+#include <CGAL/tags.h>
+
+#include <cmath>
+#include <vector>
+
+namespace CGAL
+{
+namespace Polygon_mesh_processing
+{
+
+/*!
+  \ingroup PMP_denoising_grp
+
+  \brief denoises `tmesh` by bilateral mesh denoising, Fleishman, Drori and
+  Cohen-Or (2003) [FDC03].
+
+  `number_of_iterations` times, every vertex \f$v\f$ with unit normal \f$n\f$
+  (area-weighted mean of its faces' normals) moves to
+  \f[ v' = v + n\,\frac{\sum_{q} W_c(t_q)\, W_s(h_q)\, h_q}{\sum_q W_c(t_q)\, W_s(h_q)}, \qquad
+      t_q = \|v - q\|,\ h_q = n\cdot(q - v),\ W(x) = e^{-x^2/2\sigma^2}, \f]
+  the sums running over the vertices \f$q \ne v\f$ connected to \f$v\f$ by
+  edges within distance \f$\rho = 2\sigma_c\f$ of \f$v\f$. The positions,
+  normals and neighbourhoods are those of the previous iteration (all vertices
+  move at once). Without a given \f$\sigma_s\f$, each vertex uses the standard
+  deviation of its neighbours' offsets \f$h_q\f$, as the paper proposes.
+
+  The mesh is read once and written once, at the end: if an exception is
+  thrown, `tmesh` is left unchanged.
+
+  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+          `CGAL::Parallel_if_available_tag`; the result does not depend on it.
+  \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{sigma_spatial}
+      \cgalParamDescription{\f$\sigma_c\f$, as a multiple of the mean edge length \f$l\f$ of the input}
+      \cgalParamType{double}
+      \cgalParamDefault{`1`}
+    \cgalParamNEnd
+    \cgalParamNBegin{sigma_range}
+      \cgalParamDescription{\f$\sigma_s\f$, as a multiple of \f$l\f$}
+      \cgalParamType{double}
+      \cgalParamDefault{per vertex, the standard deviation of the offsets \f$h_q\f$ of its neighbourhood}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_iterations}
+      \cgalParamDescription{the number of iterations}
+      \cgalParamType{unsigned int}
+      \cgalParamDefault{`5`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_is_constrained_map, vertex_point_map, vertex_index_map, face_index_map, geom_traits}
+      \cgalParamDescription{as for `intrinsic_denoising()`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  \pre `tmesh` is a triangle mesh with finite coordinates; the sigmas are
+       positive and finite. Otherwise `std::invalid_argument` is thrown. An
+       empty mesh is left as it is.
+*/
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
+          typename NamedParameters = parameters::Default_named_parameters>
+void bilateral_mesh_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::default_values())
+{
+  namespace D = internal::Denoising;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  static const char *fname = "bilateral_mesh_denoising()";
+  if(faces(tmesh).empty())
+    return;
+  const double relative_sigma_c = choose_parameter(get_parameter(np, internal_np::sigma_spatial), 1.);
+  const bool adaptive = is_default_parameter<NamedParameters, internal_np::sigma_range_t>::value;
+  const double relative_sigma_s = choose_parameter(get_parameter(np, internal_np::sigma_range), 1.);
+  const unsigned int iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 5u);
+  D::require_positive(relative_sigma_c, fname, "sigma_spatial");
+  D::require_positive(relative_sigma_s, fname, "sigma_range");
+
+  const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
+  D::Flat_mesh mesh = maps.flat(tmesh, fname);
+  const std::vector<char> fixed = maps.constrained(tmesh);
+  const double l = D::mean_edge_length(mesh);
+  const double sigma_c = relative_sigma_c * l, sigma_s = relative_sigma_s * l;
+  if(!(sigma_c > 0.))
+    return; // every edge has length 0: nothing to filter
+  const D::Csr adjacency = D::vertex_adjacency(mesh);
+  std::vector<D::Vec3> next(mesh.number_of_vertices());
+  for(unsigned int it = 0; it < iterations; ++it)
+  {
+    const std::vector<D::Vec3> normals = D::area_weighted_vertex_normals(mesh);
+    const D::Csr neighbors =
+        D::geometric_neighborhoods<ConcurrencyTag>(mesh.points, D::Vertex_edge_adjacency{adjacency}, 2. * sigma_c);
+    const std::vector<D::Vec3> &p = mesh.points;
+    D::for_each_chunk<ConcurrencyTag>(
+        p.size(),
+        [&](std::size_t b, std::size_t e)
+        {
+          for(std::size_t v = b; v < e; ++v)
+          {
+            next[v] = p[v];
+            const std::uint32_t kb = neighbors.begin(v), ke = neighbors.end(v);
+            if((!fixed.empty() && fixed[v]) || kb == ke || D::squared_norm(normals[v]) == 0.)
+              continue;
+            double s = sigma_s;
+            if(adaptive)
+            {
+              double sum = 0., sum2 = 0.;
+              for(std::uint32_t k = kb; k < ke; ++k)
+              {
+                const double h = D::dot(normals[v], p[neighbors.items[k]] - p[v]);
+                sum += h;
+                sum2 += h * h;
+              }
+              const double mean = sum / double(ke - kb);
+              s = std::sqrt((std::max)(0., sum2 / double(ke - kb) - mean * mean));
+            }
+            double num = 0., den = 0.;
+            for(std::uint32_t k = kb; k < ke; ++k)
+            {
+              const D::Vec3 d = p[neighbors.items[k]] - p[v];
+              const double t2 = D::squared_norm(d);
+              const double h = D::dot(normals[v], d);
+              // with a zero sigma_s (all offsets equal) the range weight is 1
+              const double w = std::exp(-t2 / (2. * sigma_c * sigma_c) - (s > 0. ? h * h / (2. * s * s) : 0.));
+              num += w * h;
+              den += w;
+            }
+            if(den > 0.)
+              next[v] = p[v] + (num / den) * normals[v];
+          }
+        });
+    mesh.points.swap(next);
+  }
+  maps.write_points(tmesh, mesh.points);
+}
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

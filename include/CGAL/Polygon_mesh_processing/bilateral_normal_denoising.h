@@ -1,0 +1,121 @@
+// Copyright (c) 2026 The intrinsic denoising package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// [ZFAT11] Zheng, Fu, Au, Tai: "Bilateral normal filtering for mesh
+// denoising", IEEE TVCG 17(10), 2011, local scheme. A classic method of the
+// paper's Table 1, and a special case of the intrinsic filter (direct paths,
+// phi = face centroid, psi = face normal, n = m = 2).
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_BILATERAL_NORMAL_DENOISING_H
+#define CGAL_POLYGON_MESH_PROCESSING_BILATERAL_NORMAL_DENOISING_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/classic_methods.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
+
+#include <CGAL/tags.h>
+
+#include <vector>
+
+namespace CGAL
+{
+namespace Polygon_mesh_processing
+{
+
+/*!
+  \ingroup PMP_denoising_grp
+
+  \brief denoises `tmesh` by the local scheme of bilateral normal filtering of
+  Zheng, Fu, Au and Tai (2011) [ZFAT11].
+
+  `number_of_iterations` times, every face normal becomes
+  \f[ n'_i = \frac{1}{K_i}\sum_{j \in N_i \cup \{i\}} A_j\, W_s(\|c_i - c_j\|)\, W_r(\|n_i - n_j\|)\, n_j,
+      \qquad W(x) = e^{-x^2/2\sigma^2}, \f]
+  (\f$K_i\f$ normalises the result), with \f$N_i\f$ the faces sharing a
+  vertex with face \f$i\f$, or, if a radius is given, the geometric
+  neighbourhood of `intrinsic_denoising()`. This is the intrinsic filter with
+  direct paths \f$\{i, j\}\f$, \f$\varphi\f$ = centroid, \f$\psi\f$ = normal and
+  \f$n = m = 2\f$, and it is computed by the same engine. After each pass the
+  vertices follow the filtered normals by `vertex_iterations` steps of eq. 10
+  (see `update_vertices_from_face_normals()`).
+
+  The mesh is read once and written once, at the end: if an exception is
+  thrown, `tmesh` is left unchanged.
+
+  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+          `CGAL::Parallel_if_available_tag`; the result does not depend on it.
+  \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{sigma_spatial}
+      \cgalParamDescription{\f$\sigma_s\f$, as a multiple of \f$d\f$, the mean distance between the centroids of
+  edge-adjacent faces of the input} \cgalParamType{double} \cgalParamDefault{`1` (the paper's \f$\sigma_s = d\f$)}
+    \cgalParamNEnd
+    \cgalParamNBegin{sigma_range}
+      \cgalParamDescription{\f$\sigma_r\f$, on the normal difference \f$\|n_i - n_j\|\f$}
+      \cgalParamType{double}
+      \cgalParamDefault{`0.35`}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_iterations}
+      \cgalParamDescription{the number of normal filtering passes}
+      \cgalParamType{unsigned int}
+      \cgalParamDefault{`20`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_iterations}
+      \cgalParamDescription{the vertex update steps after each pass}
+      \cgalParamType{unsigned int}
+      \cgalParamDefault{`10`}
+    \cgalParamNEnd
+    \cgalParamNBegin{neighbor_radius, relative_neighbor_radius}
+      \cgalParamDescription{if one is given, \f$N_i\f$ is the geometric neighbourhood of that radius (absolute, or in
+  multiples of \f$d\f$) instead of the faces sharing a vertex} \cgalParamType{double} \cgalParamDefault{unused}
+    \cgalParamNEnd
+    \cgalParamNBegin{face_normal_map, vertex_is_constrained_map, vertex_point_map, vertex_index_map, face_index_map,
+  geom_traits} \cgalParamDescription{as for `fast_feature_preserving_denoising()`} \cgalParamNEnd \cgalNamedParamsEnd
+
+  \pre `tmesh` is a triangle mesh with finite coordinates; the sigmas and the
+       radius are positive and finite. Otherwise `std::invalid_argument` is
+       thrown. An empty mesh is left as it is.
+*/
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
+          typename NamedParameters = parameters::Default_named_parameters>
+void bilateral_normal_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::default_values())
+{
+  namespace D = internal::Denoising;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  static const char *fname = "bilateral_normal_denoising()";
+  if(faces(tmesh).empty())
+    return;
+  const double relative_sigma_s = choose_parameter(get_parameter(np, internal_np::sigma_spatial), 1.);
+  const double sigma_r = choose_parameter(get_parameter(np, internal_np::sigma_range), 0.35);
+  const unsigned int iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 20u);
+  const unsigned int vertex_iterations = choose_parameter(get_parameter(np, internal_np::vertex_iterations), 10u);
+  D::require_positive(relative_sigma_s, fname, "sigma_spatial");
+  D::require_positive(sigma_r, fname, "sigma_range");
+
+  const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
+  D::Flat_mesh mesh = maps.flat(tmesh, fname);
+  const std::vector<char> fixed = maps.constrained(tmesh);
+  D::Face_data input;
+  D::compute_face_data<ConcurrencyTag>(mesh, mesh.points, input);
+  const double d = D::mean_adjacent_centroid_distance(mesh, input);
+  const bool geometric = !is_default_parameter<NamedParameters, internal_np::neighbor_radius_t>::value ||
+                         !is_default_parameter<NamedParameters, internal_np::relative_neighbor_radius_t>::value;
+  const D::Csr neighbors =
+      geometric ? D::geometric_neighborhoods<ConcurrencyTag>(mesh, input.centroids, D::read_radius_or(np, fname, d, 1.))
+                : D::topological_face_neighbors(mesh, 1);
+  const D::Path_forest direct = D::direct_paths(neighbors);
+  const double sigma_s = relative_sigma_s * (d > 0. ? d : 1.);
+
+  auto filter = [&](const D::Face_data &fd, std::vector<D::Vec3> &out)
+  { D::bilateral_normal_pass<ConcurrencyTag>(direct, fd, fd.normals, sigma_s, sigma_r, out); };
+  const std::vector<D::Vec3> filtered =
+      D::normal_filtering_scheme<ConcurrencyTag>(mesh, fixed, iterations, vertex_iterations, filter);
+  D::write_normal_filtering_result(tmesh, np, maps, mesh, filtered);
+}
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

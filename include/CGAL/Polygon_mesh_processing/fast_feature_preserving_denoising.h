@@ -1,0 +1,131 @@
+// Copyright (c) 2026 The intrinsic denoising package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// [SRML07] Sun, Rosin, Martin, Langbein: "Fast and effective
+// feature-preserving mesh denoising", IEEE TVCG 13(5), 2007. A classic method
+// of the paper's Table 1.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_FAST_FEATURE_PRESERVING_DENOISING_H
+#define CGAL_POLYGON_MESH_PROCESSING_FAST_FEATURE_PRESERVING_DENOISING_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/classic_methods.h>
+
+#include <CGAL/tags.h>
+
+#include <vector>
+
+namespace CGAL
+{
+namespace Polygon_mesh_processing
+{
+
+/*!
+  \ingroup PMP_denoising_grp
+
+  \brief denoises `tmesh` by the method of Sun, Rosin, Martin and Langbein
+  (2007) [SRML07]: face normals filtered with a threshold weight, then the
+  vertices updated to fit them.
+
+  `number_of_iterations` times, every face normal becomes
+  \f[ n'_i = \frac{\sum_{j \in N_i \cup \{i\}} f(n_i\cdot n_j)\, n_j}{\|\sum_j f(n_i\cdot n_j)\, n_j\|}, \qquad
+      f(x) = \begin{cases} (x - T)^2 & x > T \\ 0 & \text{otherwise,} \end{cases} \f]
+  with \f$N_i\f$ the faces sharing a vertex (or an edge) with face \f$i\f$;
+  face \f$i\f$ itself takes part with weight \f$(1-T)^2\f$. After each
+  pass, the vertices follow the filtered normals by `vertex_iterations` steps
+  of the paper's vertex update (eq. 10 of the intrinsic filter paper, see
+  `update_vertices_from_face_normals()`).
+
+  The mesh is read once and written once, at the end: if an exception is
+  thrown, `tmesh` is left unchanged.
+
+  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+          `CGAL::Parallel_if_available_tag`; the result does not depend on it.
+  \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{normal_threshold}
+      \cgalParamDescription{\f$T\f$: neighbours with \f$n_i\cdot n_j \le T\f$ get no weight (larger: sharper features
+  kept, less smoothing)} \cgalParamType{double in [0, 1)} \cgalParamDefault{`0.5`} \cgalParamNEnd
+    \cgalParamNBegin{use_vertex_neighborhood}
+      \cgalParamDescription{if `true`, \f$N_i\f$ is the faces sharing a vertex with face \f$i\f$; if `false`, an edge}
+      \cgalParamType{bool}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_iterations}
+      \cgalParamDescription{\f$n_1\f$, the number of normal filtering passes}
+      \cgalParamType{unsigned int}
+      \cgalParamDefault{`20`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_iterations}
+      \cgalParamDescription{\f$n_2\f$, the vertex update steps after each pass}
+      \cgalParamType{unsigned int}
+      \cgalParamDefault{`10`}
+    \cgalParamNEnd
+    \cgalParamNBegin{face_normal_map}
+      \cgalParamDescription{if given, receives the filtered normals of the last pass}
+      \cgalParamType{a model of `WritablePropertyMap` with face descriptors as keys and `GeomTraits::Vector_3` as
+  values} \cgalParamDefault{unused} \cgalParamNEnd \cgalParamNBegin{vertex_is_constrained_map} \cgalParamDescription{a
+  property map telling which vertices never move} \cgalParamType{a model of `ReadablePropertyMap` with vertex
+  descriptors as keys and `bool` as values} \cgalParamDefault{no vertex is constrained} \cgalParamNEnd
+    \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map, geom_traits}
+      \cgalParamDescription{as for `intrinsic_denoising()`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  \pre `tmesh` is a triangle mesh with finite coordinates and \f$0 \le T < 1\f$;
+       otherwise `std::invalid_argument` is thrown. An empty mesh is left as it is.
+*/
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
+          typename NamedParameters = parameters::Default_named_parameters>
+void fast_feature_preserving_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::default_values())
+{
+  namespace D = internal::Denoising;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  static const char *fname = "fast_feature_preserving_denoising()";
+  if(faces(tmesh).empty())
+    return;
+  const double threshold = choose_parameter(get_parameter(np, internal_np::normal_threshold), 0.5);
+  const bool vertex_ring = choose_parameter(get_parameter(np, internal_np::use_vertex_neighborhood), true);
+  const unsigned int iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 20u);
+  const unsigned int vertex_iterations = choose_parameter(get_parameter(np, internal_np::vertex_iterations), 10u);
+  D::require_unit_interval(threshold, fname, "normal_threshold");
+
+  const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
+  D::Flat_mesh mesh = maps.flat(tmesh, fname);
+  const std::vector<char> fixed = maps.constrained(tmesh);
+  const D::Csr neighbors = D::topological_face_neighbors(mesh, vertex_ring ? 1 : 2);
+
+  auto filter = [&](const D::Face_data &fd, std::vector<D::Vec3> &out)
+  {
+    const std::vector<D::Vec3> &n = fd.normals;
+    out.resize(n.size());
+    D::for_each_chunk<ConcurrencyTag>(n.size(),
+                                      [&](std::size_t b, std::size_t e)
+                                      {
+                                        for(std::size_t i = b; i < e; ++i)
+                                        {
+                                          const double self = 1. - threshold;
+                                          D::Vec3 sum = (self * self) * n[i];
+                                          for(std::uint32_t k = neighbors.begin(i); k < neighbors.end(i); ++k)
+                                          {
+                                            const D::Vec3 &nj = n[neighbors.items[k]];
+                                            const double x = D::dot(n[i], nj) - threshold;
+                                            if(x > 0.)
+                                              sum = sum + (x * x) * nj;
+                                          }
+                                          const double len = D::norm(sum);
+                                          out[i] = len > 0. ? (1. / len) * sum
+                                                            : n[i]; // a degenerate face keeps its zero normal
+                                        }
+                                      });
+  };
+  const std::vector<D::Vec3> filtered =
+      D::normal_filtering_scheme<ConcurrencyTag>(mesh, fixed, iterations, vertex_iterations, filter);
+  D::write_normal_filtering_result(tmesh, np, maps, mesh, filtered);
+}
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

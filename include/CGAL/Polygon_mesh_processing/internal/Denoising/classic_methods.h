@@ -1,0 +1,199 @@
+// Copyright (c) 2026 The intrinsic denoising package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Parts shared by the classic denoisers of the paper's Table 1 (issue 9):
+// topological face neighbourhoods, the faces around a vertex within a radius,
+// and the loop "filter the face normals, then move the vertices (eq. 10)"
+// common to the normal-filtering methods (Sun et al. 2007, Zheng et al. 2011,
+// Zhang et al. 2015).
+
+#ifndef CGAL_PMP_INTERNAL_DENOISING_CLASSIC_METHODS_H
+#define CGAL_PMP_INTERNAL_DENOISING_CLASSIC_METHODS_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/face_data.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/path_forest.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/path_weights.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL
+{
+namespace Polygon_mesh_processing
+{
+namespace internal
+{
+namespace Denoising
+{
+
+// The faces sharing at least `shared` vertices with each face (2: an edge, 1:
+// a vertex), face itself excluded, in increasing index order.
+inline Csr topological_face_neighbors(const Flat_mesh &m, int shared)
+{
+  const std::size_t nf = m.number_of_faces();
+  Csr csr;
+  csr.offsets.assign(nf + 1, 0);
+  std::vector<std::uint32_t> list;
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    list.clear();
+    for(std::uint32_t v : m.triangles[f])
+      for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
+        if(m.vertex_faces[k] != f)
+          list.push_back(m.vertex_faces[k]);
+    std::sort(list.begin(), list.end());
+    // a face appears once per shared vertex
+    for(std::size_t a = 0; a < list.size();)
+    {
+      std::size_t b = a;
+      while(b < list.size() && list[b] == list[a])
+        ++b;
+      if(int(b - a) >= shared)
+        csr.items.push_back(list[a]);
+      a = b;
+    }
+    csr.offsets[f + 1] = std::uint32_t(csr.items.size());
+  }
+  return csr;
+}
+
+// For each vertex v, the faces whose centroid lies within `radius` of v and
+// that are connected to v through faces of that kind (a breadth-first search
+// from v's incident faces through shared vertices).
+inline Csr vertex_face_neighborhoods(const Flat_mesh &m, const std::vector<Vec3> &points,
+                                     const std::vector<Vec3> &centroids, double radius)
+{
+  const std::size_t nv = m.number_of_vertices();
+  const double r2 = radius * radius;
+  Csr csr;
+  csr.offsets.assign(nv + 1, 0);
+  std::vector<std::uint32_t> stamp(m.number_of_faces(), std::uint32_t(-1));
+  std::vector<std::uint32_t> queue;
+  for(std::uint32_t v = 0; v < nv; ++v)
+  {
+    queue.clear();
+    const Vec3 &p = points[v];
+    auto visit = [&](std::uint32_t g)
+    {
+      if(stamp[g] == v)
+        return;
+      stamp[g] = v;
+      if(squared_norm(centroids[g] - p) <= r2)
+        queue.push_back(g);
+    };
+    for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
+      visit(m.vertex_faces[k]);
+    const Face_vertex_adjacency adjacent{m};
+    for(std::size_t q = 0; q < queue.size(); ++q)
+      adjacent(queue[q], visit);
+    csr.items.insert(csr.items.end(), queue.begin(), queue.end());
+    csr.offsets[v + 1] = std::uint32_t(csr.items.size());
+  }
+  return csr;
+}
+
+// The scheme of the normal-filtering denoisers: `iterations` times, the face
+// normals of the current mesh are filtered by `filter(current_face_data,
+// filtered_normals)` and the vertices follow them by `vertex_iterations` steps
+// of eq. 10. Works on `mesh.points`; writes nothing to the user's mesh.
+// Returns the filtered normals of the last pass (empty if no pass).
+template <typename ConcurrencyTag, typename Filter>
+std::vector<Vec3> normal_filtering_scheme(Flat_mesh &mesh, const std::vector<char> &fixed, unsigned int iterations,
+                                          unsigned int vertex_iterations, Filter &filter)
+{
+  Face_data current;
+  std::vector<Vec3> filtered, centroids, next;
+  for(unsigned int it = 0; it < iterations; ++it)
+  {
+    compute_face_data<ConcurrencyTag>(mesh, mesh.points, current);
+    filter(current, filtered);
+    update_vertices<ConcurrencyTag>(mesh, mesh.points, filtered, fixed, vertex_iterations, centroids, next);
+  }
+  return filtered;
+}
+
+// Writes the result of a normal-filtering denoiser to the user's mesh (once)
+// and, if asked for, the filtered normals of the last pass.
+template <typename TriangleMesh, typename NamedParameters, typename Maps>
+void write_normal_filtering_result(TriangleMesh &tmesh, const NamedParameters &np, const Maps &maps,
+                                   const Flat_mesh &mesh, const std::vector<Vec3> &filtered)
+{
+  maps.write_points(tmesh, mesh.points);
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
+    if(!filtered.empty())
+      maps.write_face_vectors(tmesh, filtered, parameters::get_parameter(np, internal_np::face_normal));
+}
+
+// One pass of a (joint) bilateral normal filter, as the intrinsic filter's
+// engine with direct paths, phi = the face centroid, psi = `guidance`, and
+// n = m = 2 (Zheng et al. 2011 with guidance = the normals; Zhang et al. 2015
+// with guidance = the guidance normals):
+//   out[i] = normalised sum over j in {i} + N_i of
+//            A_j exp(-|c_i - c_j|^2 / 2 sigma_s^2) exp(-|g_i - g_j|^2 / 2 sigma_r^2) n_j.
+// Face i takes part with weight A_i (both kernels are 1 at distance 0). A
+// face whose sum vanishes keeps its normal.
+template <typename ConcurrencyTag>
+void bilateral_normal_pass(const Path_forest &direct, const Face_data &fd, const std::vector<Vec3> &guidance,
+                           double sigma_spatial, double sigma_range, std::vector<Vec3> &out)
+{
+  Intrinsic_kernel kernel;
+  kernel.sigma_spatial = sigma_spatial;
+  kernel.sigma_range = sigma_range;
+  kernel.spatial_exponent = kernel.range_exponent = 2.;
+  kernel.include_self = true;
+  out.resize(fd.normals.size());
+  const auto centroid_sq = [&fd](std::uint32_t a, std::uint32_t b)
+  { return squared_norm(fd.centroids[a] - fd.centroids[b]); };
+  const auto guidance_sq = [&guidance](std::uint32_t a, std::uint32_t b)
+  { return squared_norm(guidance[a] - guidance[b]); };
+  intrinsic_weights_pass<ConcurrencyTag>(direct, kernel, centroid_sq, guidance_sq,
+                                         [&](std::size_t i, std::uint32_t b, std::uint32_t e, const double *w)
+                                         {
+                                           Vec3 sum = fd.areas[i] * fd.normals[i];
+                                           for(std::uint32_t k = b; k < e; ++k)
+                                           {
+                                             const std::uint32_t j = direct.face[k];
+                                             sum = sum + (fd.areas[j] * w[k - b]) * fd.normals[j];
+                                           }
+                                           const double len = norm(sum);
+                                           out[i] = (len > 0. && std::isfinite(len)) ? (1. / len) * sum : fd.normals[i];
+                                         });
+}
+
+// The neighbourhood radius: neighbor_radius if given, else
+// relative_neighbor_radius (default `default_relative`) times `unit`.
+template <typename NamedParameters>
+double read_radius_or(const NamedParameters &np, const char *fname, double unit, double default_relative)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::neighbor_radius_t>::value)
+  {
+    const double absolute = get_parameter(np, internal_np::neighbor_radius);
+    require_positive(absolute, fname, "neighbor_radius");
+    return absolute;
+  }
+  const double relative = choose_parameter(get_parameter(np, internal_np::relative_neighbor_radius), default_relative);
+  require_positive(relative, fname, "relative_neighbor_radius");
+  return relative * unit;
+}
+
+// Throws std::invalid_argument unless x is in [0, 1) and finite (thresholds).
+inline void require_unit_interval(double x, const char *function_name, const char *what)
+{
+  if(!(x >= 0. && x < 1.))
+    throw std::invalid_argument(std::string(function_name) + ": " + what + " must be in [0, 1) (got " +
+                                std::to_string(x) + ").");
+}
+
+} // namespace Denoising
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif
