@@ -53,13 +53,13 @@ int fail(int code, const std::string &message)
 struct Settings
 {
   std::string input, output, reference, noisy_output;
-  unsigned int iterations = 30, vertex_iterations = 2, patch_rings = 1;
+  // signed, so that a negative value is caught (Boost would wrap it into an unsigned)
+  long long iterations = 30, vertex_iterations = 2, patch_rings = 1, seed = 1;
   double sigma_spatial = 0.4, sigma_range = 0.4, radius = 0., relative_radius = 4.;
   double spatial_exponent = 1., range_exponent = 1.;
   std::string paths = "square", threads = "all";
   bool step_length = false, self_weight = false, no_fold_guard = false, quiet = false;
   double noise = 0., impulsive = 1.;
-  unsigned int seed = 1;
 };
 
 const char *const help_head = R"(NAME
@@ -293,6 +293,12 @@ int main(int argc, char **argv)
   // usage checks
   if(s.input.empty())
     return fail(exit_usage, "no input file");
+  const long long max_count = 1000000;
+  if(s.iterations < 0 || s.iterations > max_count || s.vertex_iterations < 0 || s.vertex_iterations > max_count ||
+     s.patch_rings < 0 || s.patch_rings > max_count)
+    return fail(exit_usage, "--iterations, --vertex-iterations and --geodesic-rings must lie in [0, 1000000]");
+  if(s.seed < 0 || s.seed > 4294967295LL)
+    return fail(exit_usage, "--seed must lie in [0, 4294967295]");
   if(s.paths != "square" && s.paths != "direct" && s.paths != "graph" && s.paths != "geodesic")
     return fail(exit_usage, "--paths must be square, direct, graph or geodesic, not '" + s.paths + "'");
   if(s.threads != "1" && s.threads != "all")
@@ -314,6 +320,11 @@ int main(int argc, char **argv)
     const std::string ext = denoise_file::extension(s.output);
     if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
       return fail(exit_usage, "unknown output format '" + ext + "' (OFF, OBJ, PLY and STL are written)");
+  }
+  {
+    std::error_code ec;
+    if(std::filesystem::exists(s.output, ec) && std::filesystem::equivalent(s.output, s.input, ec))
+      return fail(exit_input, "refusing to overwrite the input '" + s.input + "'");
   }
   const bool talk = !s.quiet;
 
@@ -338,18 +349,22 @@ int main(int argc, char **argv)
     try
     {
       if(vm.count("impulsive"))
-        PMP::add_impulsive_noise(input, s.impulsive, s.noise, CGAL::parameters::random_seed(s.seed));
+        PMP::add_impulsive_noise(input, s.impulsive, s.noise,
+                                 CGAL::parameters::random_seed(static_cast<unsigned int>(s.seed)));
       else
-        PMP::add_gaussian_noise(input, s.noise, CGAL::parameters::random_seed(s.seed));
+        PMP::add_gaussian_noise(input, s.noise, CGAL::parameters::random_seed(static_cast<unsigned int>(s.seed)));
     }
     catch(const std::exception &e)
     {
       return fail(exit_input, e.what());
     }
     if(talk)
-      std::cout << (vm.count("impulsive") ? "impulsive" : "Gaussian") << " noise: sigma_E = " << s.noise
-                << (vm.count("impulsive") ? ", fraction " + std::to_string(s.impulsive) : std::string()) << ", seed "
-                << s.seed << "\n";
+    {
+      std::cout << (vm.count("impulsive") ? "impulsive" : "Gaussian") << " noise: sigma_E = " << s.noise;
+      if(vm.count("impulsive"))
+        std::cout << ", fraction " << s.impulsive;
+      std::cout << ", seed " << s.seed << "\n";
+    }
     if(!s.noisy_output.empty())
     {
       problem = write_mesh(s.noisy_output, input, s.input);
@@ -363,15 +378,15 @@ int main(int argc, char **argv)
                                                 : s.paths == "direct" ? PMP::Intrinsic_path_strategy::DIRECT
                                                 : s.paths == "graph" ? PMP::Intrinsic_path_strategy::SHORTEST_GRAPH_PATH
                                                                      : PMP::Intrinsic_path_strategy::GEODESIC;
-  const auto np = CGAL::parameters::number_of_iterations(s.iterations)
-                      .vertex_iterations(s.vertex_iterations)
+  const auto np = CGAL::parameters::number_of_iterations(static_cast<unsigned int>(s.iterations))
+                      .vertex_iterations(static_cast<unsigned int>(s.vertex_iterations))
                       .sigma_spatial(s.sigma_spatial)
                       .sigma_range(s.sigma_range)
                       .spatial_exponent(s.spatial_exponent)
                       .range_exponent(s.range_exponent)
                       .path_strategy(strategy)
                       .use_step_length(s.step_length)
-                      .geodesic_patch_rings(s.patch_rings)
+                      .geodesic_patch_rings(static_cast<unsigned int>(s.patch_rings))
                       .include_self_weight(s.self_weight)
                       .prevent_folds(!s.no_fold_guard);
   Mesh denoised = input;
