@@ -1,0 +1,439 @@
+// `denoise`: the package's command-line tool. Denoises an OFF, OBJ, PLY or
+// STL triangle mesh with the intrinsic filter (Algorithm 1 of "Mesh denoising
+// via generalized intrinsic filter on 2D manifold"), with every parameter of
+// CGAL::Polygon_mesh_processing::intrinsic_denoising() on the command line;
+// optionally adds seeded noise first and prints E_n / E_v against a reference.
+//
+// Run `denoise --help` for the manual (also in doc/Polygon_mesh_processing/denoise_help.txt).
+// Exit status: 0 success, 1 bad input or I/O error, 2 bad usage.
+
+#include "denoise_mesh_file.h"
+
+#include <CGAL/Polygon_mesh_processing/add_noise.h>
+#include <CGAL/Polygon_mesh_processing/denoising_error.h>
+#include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <boost/program_options.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <cstdio>
+#include <iostream>
+#include <mutex>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include <unistd.h>
+
+namespace po = boost::program_options;
+namespace PMP = CGAL::Polygon_mesh_processing;
+typedef denoise_file::Mesh Mesh;
+
+namespace
+{
+
+const int exit_ok = 0, exit_input = 1, exit_usage = 2;
+
+int fail(int code, const std::string &message)
+{
+  std::string line = message;
+  for(char &c : line)
+    if(c == '\n' || c == '\r')
+      c = ' ';
+  std::cerr << "denoise: " << (code == exit_usage ? "usage error: " : "error: ") << line
+            << (code == exit_usage ? " (see denoise --help)\n" : "\n");
+  return code;
+}
+
+struct Settings
+{
+  std::string input, output, reference, noisy_output;
+  // signed, so that a negative value is caught (Boost would wrap it into an unsigned)
+  long long iterations = 30, vertex_iterations = 2, patch_rings = 1, seed = 1;
+  double sigma_spatial = 0.4, sigma_range = 0.4, radius = 0., relative_radius = 4.;
+  double spatial_exponent = 1., range_exponent = 1.;
+  std::string paths = "square", threads = "all";
+  bool step_length = false, self_weight = false, no_fold_guard = false, quiet = false;
+  double noise = 0., impulsive = 1.;
+};
+
+const char *const help_head = R"(NAME
+    denoise - feature-preserving mesh denoising with the intrinsic filter
+
+SYNOPSIS
+    denoise [OPTIONS] INPUT [-o OUTPUT]
+    denoise --help
+
+DESCRIPTION
+    Denoises the triangle mesh INPUT (OFF, OBJ, PLY or STL, chosen by the file
+    extension) with CGAL::Polygon_mesh_processing::intrinsic_denoising(), the
+    intrinsic filter of "Mesh denoising via generalized intrinsic filter on 2D
+    manifold" (Algorithm 1): face normals are averaged over a geometric
+    neighbourhood of radius r with weights that integrate normal differences
+    along a path from each face to its neighbour (eqs. 8-9), the vertices then
+    follow the filtered normals (eq. 10), and the two steps are repeated.
+    Sharp edges and corners are kept; noise is removed.
+
+    Neighbourhoods and paths are computed once, on the input. Paths follow the
+    paper's square pattern (section 4) by default; --paths chooses the exact
+    geodesic (section 3.2, slower), the direct path i-j (a bilateral normal
+    filter) or shortest paths in the face graph.
+
+    With --noise, seeded Gaussian noise is added to INPUT first (as in the
+    paper's experiments, section 5.2). With --reference, the errors E_n (mean
+    face normal angle, degrees, eq. 12) and E_v (area-weighted distance to the
+    reference, eq. 11) of the input and of the result are printed; the
+    reference must have the same faces as INPUT (same count and order).
+
+    The result is written as OUTPUT (format from its extension; default
+    INPUT_denoised.off next to INPUT) through a temporary file and a rename,
+    never over INPUT. Results go to standard output; errors are one line on
+    standard error. While the filter runs longer than a second on a terminal,
+    the elapsed time is shown on standard error (the library reports no
+    per-iteration progress, so this is a clock, not a percentage).
+
+)";
+
+const char *const help_tail = R"(
+EXIT STATUS
+    0   success
+    1   bad input or I/O error: unreadable, truncated or malformed file, not a
+        triangle mesh, NaN or infinite coordinates, reference with other faces,
+        output not writable
+    2   bad usage: unknown option, missing or malformed value, value out of range
+
+EXAMPLES
+    Denoise a scan with the defaults (k = 30, v = 2, r = 4d, sigma = 0.4):
+        denoise scan.off -o scan_clean.off
+
+    The paper's fandisk experiment: noise sigma_E = 0.3 (seed 1), then E_n/E_v:
+        denoise fandisk.off --noise 0.3 --reference fandisk.off -o out.off
+
+    Organic, finely detailed mesh: larger sigmas, fewer iterations:
+        denoise bunny.ply --sigma-spatial 0.6 --sigma-range 0.6 --iterations 10 -o bunny_clean.ply
+
+    Exact geodesic paths with step lengths, single thread:
+        denoise part.stl --paths geodesic --step-length --threads 1 -o part_clean.stl
+
+SEE ALSO
+    doc/Polygon_mesh_processing/ (the package manual), README.md
+)";
+
+po::options_description make_options(Settings &s)
+{
+  po::options_description general("", 80, 40);
+  // clang-format off
+  general.add_options()
+    ("help,h", "print this manual and exit")
+    ("output,o", po::value(&s.output)->value_name("FILE"),
+       "output mesh (.off, .obj, .ply or .stl); default: INPUT_denoised.off next to INPUT")
+    ("iterations,k", po::value(&s.iterations)->value_name("K")->default_value(s.iterations),
+       "k_iter: normal filtering passes (0: no change)")
+    ("vertex-iterations,v", po::value(&s.vertex_iterations)->value_name("V")->default_value(s.vertex_iterations),
+       "v_iter: vertex update steps (eq. 10) after each pass")
+    ("sigma-spatial", po::value(&s.sigma_spatial)->value_name("S")->default_value(s.sigma_spatial, "0.4"),
+       "sigma_s: width of the kernel on d^s, the sum of normal changes along the path; the paper uses 0.1 to 0.8")
+    ("sigma-range", po::value(&s.sigma_range)->value_name("S")->default_value(s.sigma_range, "0.4"),
+       "sigma_r: width of the kernel on d^r, the sum of normal differences to n_i along the path")
+    ("radius,r", po::value(&s.radius)->value_name("R"),
+       "neighbourhood radius in the mesh's length unit (overrides --relative-radius)")
+    ("relative-radius", po::value(&s.relative_radius)->value_name("R")->default_value(s.relative_radius, "4"),
+       "neighbourhood radius as a multiple of d, the mean distance between centroids of edge-adjacent faces (the "
+       "paper uses 2 to 6)")
+    ("spatial-exponent", po::value(&s.spatial_exponent)->value_name("N")->default_value(s.spatial_exponent, "1"),
+       "exponent n of d^s (eq. 9; 1 is the L1 form of the paper)")
+    ("range-exponent", po::value(&s.range_exponent)->value_name("M")->default_value(s.range_exponent, "1"),
+       "exponent m of d^r (eq. 9)")
+    ("paths", po::value(&s.paths)->value_name("STRATEGY")->default_value(s.paths),
+       "square (section 4), geodesic (exact geodesics, section 3.2), direct (path i-j: bilateral filter) or graph "
+       "(shortest paths in the face graph)")
+    ("geodesic-rings", po::value(&s.patch_rings)->value_name("N")->default_value(s.patch_rings),
+       "with --paths geodesic: rings of faces added around each neighbourhood patch")
+    ("step-length", po::bool_switch(&s.step_length), "multiply the terms of eq. 9 by the step lengths (eq. 4)")
+    ("self-weight", po::bool_switch(&s.self_weight), "include face i's own normal in its average")
+    ("no-fold-guard", po::bool_switch(&s.no_fold_guard),
+       "apply eq. 10 exactly, as the paper does, without the safeguard against folded triangles")
+    ("threads", po::value(&s.threads)->value_name("1|all")->default_value(s.threads),
+       "1: sequential; all: parallel with TBB when available (the result is the same)")
+    ("noise", po::value(&s.noise)->value_name("SIGMA_E"),
+       "first add Gaussian noise along vertex normals, of standard deviation SIGMA_E times the mean edge length")
+    ("impulsive", po::value(&s.impulsive)->value_name("FRACTION"),
+       "with --noise: impulsive noise, only this fraction of the vertices moves")
+    ("seed", po::value(&s.seed)->value_name("SEED")->default_value(s.seed), "seed of the noise (reproducible)")
+    ("noisy-output", po::value(&s.noisy_output)->value_name("FILE"), "with --noise: also write the noisy mesh")
+    ("reference", po::value(&s.reference)->value_name("FILE"),
+       "noise-free mesh with the same faces: print E_n and E_v of the input and of the result")
+    ("quiet,q", po::bool_switch(&s.quiet), "print only E_n/E_v (with --reference) and errors");
+  // clang-format on
+  return general;
+}
+
+// Writes `mesh` to `path` in the format of its extension, atomically (OFF
+// through denoise_mesh_file.h; other formats the same way: temporary file in
+// the same directory, then a rename), never over `protect`.
+std::string write_mesh(const std::string &path, const Mesh &mesh, const std::string &protect)
+{
+  const std::string ext = denoise_file::extension(path);
+  if(ext == "off")
+    return denoise_file::write_mesh_file(path, mesh, protect);
+  if(ext != "obj" && ext != "ply" && ext != "stl")
+    return "unknown output format '" + ext + "' (OFF, OBJ, PLY and STL are written)";
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if(!protect.empty() && fs::exists(path, ec) && fs::equivalent(path, protect, ec))
+    return "refusing to overwrite the input '" + protect + "'";
+  const std::string tmp = path + ".tmp" + std::to_string(static_cast<long>(::getpid())) + "." + ext;
+  bool ok = false;
+  try
+  {
+    ok = CGAL::IO::write_polygon_mesh(tmp, mesh, CGAL::parameters::stream_precision(17).verbose(false));
+  }
+  catch(const std::exception &)
+  {
+    ok = false;
+  }
+  if(!ok || std::rename(tmp.c_str(), path.c_str()) != 0)
+  {
+    std::remove(tmp.c_str());
+    return "cannot write '" + path + "'";
+  }
+  return std::string();
+}
+
+// Shows the elapsed time on stderr, once a second after the first second,
+// while the object lives, if stderr is a terminal. The library gives no
+// per-iteration callback, so this is a clock, not a percentage.
+class Elapsed_clock
+{
+public:
+  Elapsed_clock(const std::string &what, bool enabled) : what_(what)
+  {
+    if(enabled && ::isatty(STDERR_FILENO))
+      thread_ = std::thread([this] { run(); });
+  }
+  ~Elapsed_clock()
+  {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_ = true;
+    }
+    cv_.notify_all();
+    if(thread_.joinable())
+      thread_.join();
+  }
+
+private:
+  void run()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    std::unique_lock<std::mutex> lock(mutex_);
+    bool shown = false;
+    for(int s = 1; !cv_.wait_until(lock, start + std::chrono::seconds(s), [this] { return done_; }); ++s)
+    {
+      std::fprintf(stderr, "\rdenoise: %s... %d s", what_.c_str(), s);
+      std::fflush(stderr);
+      shown = true;
+    }
+    if(shown)
+      std::fprintf(stderr, "\r\033[K");
+  }
+  std::string what_;
+  std::mutex mutex_;
+  std::condition_variable cv_;
+  bool done_ = false;
+  std::thread thread_;
+};
+
+template <typename ConcurrencyTag, typename NamedParameters>
+std::string run_denoising(Mesh &mesh, const Settings &s, const NamedParameters &np)
+{
+  if(s.radius > 0.)
+    return denoise_file::denoise<ConcurrencyTag>(mesh, np.neighbor_radius(s.radius));
+  return denoise_file::denoise<ConcurrencyTag>(mesh, np.relative_neighbor_radius(s.relative_radius));
+}
+
+bool positive_finite(double x)
+{
+  return std::isfinite(x) && x > 0.;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+  Settings s;
+  po::options_description options = make_options(s);
+  po::options_description hidden;
+  hidden.add_options()("input", po::value(&s.input));
+  po::options_description all;
+  all.add(options).add(hidden);
+  po::positional_options_description positional;
+  positional.add("input", 1);
+  po::variables_map vm;
+  try
+  {
+    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
+    po::notify(vm);
+  }
+  catch(const po::error &e)
+  {
+    return fail(exit_usage, e.what());
+  }
+  if(vm.count("help"))
+  {
+    std::cout << help_head << "OPTIONS\n" << options << help_tail;
+    return exit_ok;
+  }
+
+  // usage checks
+  if(s.input.empty())
+    return fail(exit_usage, "no input file");
+  const long long max_count = 1000000;
+  if(s.iterations < 0 || s.iterations > max_count || s.vertex_iterations < 0 || s.vertex_iterations > max_count ||
+     s.patch_rings < 0 || s.patch_rings > max_count)
+    return fail(exit_usage, "--iterations, --vertex-iterations and --geodesic-rings must lie in [0, 1000000]");
+  if(s.seed < 0 || s.seed > 4294967295LL)
+    return fail(exit_usage, "--seed must lie in [0, 4294967295]");
+  if(s.paths != "square" && s.paths != "direct" && s.paths != "graph" && s.paths != "geodesic")
+    return fail(exit_usage, "--paths must be square, direct, graph or geodesic, not '" + s.paths + "'");
+  if(s.threads != "1" && s.threads != "all")
+    return fail(exit_usage, "--threads must be 1 or all, not '" + s.threads + "'");
+  if(!positive_finite(s.sigma_spatial) || !positive_finite(s.sigma_range) || !positive_finite(s.spatial_exponent) ||
+     !positive_finite(s.range_exponent) || !positive_finite(s.relative_radius))
+    return fail(exit_usage, "sigmas, exponents and radii must be positive and finite");
+  if(vm.count("radius") && !positive_finite(s.radius))
+    return fail(exit_usage, "--radius must be positive and finite");
+  if(vm.count("noise") && !(std::isfinite(s.noise) && s.noise >= 0.))
+    return fail(exit_usage, "--noise must be non-negative and finite");
+  if(vm.count("impulsive") && !(s.impulsive >= 0. && s.impulsive <= 1.))
+    return fail(exit_usage, "--impulsive must lie in [0, 1]");
+  if((vm.count("impulsive") || vm.count("noisy-output")) && !vm.count("noise"))
+    return fail(exit_usage, "--impulsive and --noisy-output need --noise");
+  if(s.output.empty())
+    s.output = denoise_file::output_path(s.input);
+  {
+    const std::string ext = denoise_file::extension(s.output);
+    if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
+      return fail(exit_usage, "unknown output format '" + ext + "' (OFF, OBJ, PLY and STL are written)");
+  }
+  {
+    std::error_code ec;
+    if(std::filesystem::exists(s.output, ec) && std::filesystem::equivalent(s.output, s.input, ec))
+      return fail(exit_input, "refusing to overwrite the input '" + s.input + "'");
+  }
+  const bool talk = !s.quiet;
+
+  // input
+  Mesh input, reference;
+  std::string problem = denoise_file::read_mesh_file(s.input, input);
+  if(!problem.empty())
+    return fail(exit_input, problem);
+  if(!s.reference.empty())
+  {
+    problem = denoise_file::read_mesh_file(s.reference, reference);
+    if(!problem.empty())
+      return fail(exit_input, "reference " + problem);
+    if(num_faces(reference) != num_faces(input))
+      return fail(exit_input, "the reference has " + std::to_string(num_faces(reference)) + " faces, the input " +
+                                  std::to_string(num_faces(input)));
+  }
+  if(talk)
+    std::cout << s.input << ": " << num_vertices(input) << " vertices, " << num_faces(input) << " faces\n";
+  if(vm.count("noise"))
+  {
+    try
+    {
+      if(vm.count("impulsive"))
+        PMP::add_impulsive_noise(input, s.impulsive, s.noise,
+                                 CGAL::parameters::random_seed(static_cast<unsigned int>(s.seed)));
+      else
+        PMP::add_gaussian_noise(input, s.noise, CGAL::parameters::random_seed(static_cast<unsigned int>(s.seed)));
+    }
+    catch(const std::exception &e)
+    {
+      return fail(exit_input, e.what());
+    }
+    if(talk)
+    {
+      std::cout << (vm.count("impulsive") ? "impulsive" : "Gaussian") << " noise: sigma_E = " << s.noise;
+      if(vm.count("impulsive"))
+        std::cout << ", fraction " << s.impulsive;
+      std::cout << ", seed " << s.seed << "\n";
+    }
+    if(!s.noisy_output.empty())
+    {
+      problem = write_mesh(s.noisy_output, input, s.input);
+      if(!problem.empty())
+        return fail(exit_input, problem);
+    }
+  }
+
+  // denoising
+  const PMP::Intrinsic_path_strategy strategy = s.paths == "square"   ? PMP::Intrinsic_path_strategy::SQUARE_PATTERN
+                                                : s.paths == "direct" ? PMP::Intrinsic_path_strategy::DIRECT
+                                                : s.paths == "graph" ? PMP::Intrinsic_path_strategy::SHORTEST_GRAPH_PATH
+                                                                     : PMP::Intrinsic_path_strategy::GEODESIC;
+  const auto np = CGAL::parameters::number_of_iterations(static_cast<unsigned int>(s.iterations))
+                      .vertex_iterations(static_cast<unsigned int>(s.vertex_iterations))
+                      .sigma_spatial(s.sigma_spatial)
+                      .sigma_range(s.sigma_range)
+                      .spatial_exponent(s.spatial_exponent)
+                      .range_exponent(s.range_exponent)
+                      .path_strategy(strategy)
+                      .use_step_length(s.step_length)
+                      .geodesic_patch_rings(static_cast<unsigned int>(s.patch_rings))
+                      .include_self_weight(s.self_weight)
+                      .prevent_folds(!s.no_fold_guard);
+  Mesh denoised = input;
+  const auto start = std::chrono::steady_clock::now();
+  {
+    Elapsed_clock clock("denoising " + std::to_string(num_faces(input)) + " faces", talk);
+    problem = s.threads == "1" ? run_denoising<CGAL::Sequential_tag>(denoised, s, np)
+                               : run_denoising<CGAL::Parallel_if_available_tag>(denoised, s, np);
+  }
+  if(!problem.empty())
+    return fail(exit_input, problem);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if(talk)
+  {
+    std::ostringstream radius;
+    if(s.radius > 0.)
+      radius << s.radius;
+    else
+      radius << s.relative_radius << "d";
+    std::cout << "denoised in " << seconds << " s: " << s.paths << " paths, k = " << s.iterations
+              << ", v = " << s.vertex_iterations << ", r = " << radius.str() << ", sigma_s = " << s.sigma_spatial
+              << ", sigma_r = " << s.sigma_range << ", n = " << s.spatial_exponent << ", m = " << s.range_exponent
+              << (s.step_length ? ", step lengths" : "") << (s.no_fold_guard ? ", no fold guard" : "") << ", threads "
+              << s.threads << "\n";
+  }
+
+  if(!s.reference.empty())
+  {
+    try
+    {
+      const double en_in = PMP::face_normal_error(input, reference),
+                   en_out = PMP::face_normal_error(denoised, reference);
+      const double ev_in = PMP::vertex_position_error(input, reference),
+                   ev_out = PMP::vertex_position_error(denoised, reference);
+      std::cout << "E_n (degrees): input " << en_in << ", denoised " << en_out << "\n";
+      std::cout << "E_v: input " << ev_in << ", denoised " << ev_out << "\n";
+    }
+    catch(const std::exception &e)
+    {
+      return fail(exit_input, std::string("cannot compare with the reference: ") + e.what());
+    }
+  }
+
+  problem = write_mesh(s.output, denoised, s.input);
+  if(!problem.empty())
+    return fail(exit_input, problem);
+  if(talk)
+    std::cout << "output: " << s.output << "\n";
+  return exit_ok;
+}

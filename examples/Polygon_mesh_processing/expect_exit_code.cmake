@@ -1,0 +1,35 @@
+# cmake -DEXE=program -DARGS="a|b" -DEXPECTED=code [-DEXPECT_OUTPUT=regex] [-DEXPECT_FILE=path] -P expect_exit_code.cmake
+# Runs EXE with ARGS and fails unless it exits with EXPECTED, its standard
+# error is at most one line when it fails, its standard output matches
+# EXPECT_OUTPUT and EXPECT_FILE exists (when given).
+if(DEFINED EXPECT_FILE)
+  file(REMOVE ${EXPECT_FILE})
+endif()
+string(REPLACE "|" ";" ARGS "${ARGS}") # arguments are separated by |
+execute_process(COMMAND ${EXE} ${ARGS} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("exit code ${code}\nstdout:\n${out}\nstderr:\n${err}")
+if(NOT code STREQUAL "${EXPECTED}")
+  message(FATAL_ERROR "expected exit code ${EXPECTED}, got ${code}")
+endif()
+if(NOT EXPECTED EQUAL 0)
+  string(REGEX MATCHALL "denoise: [a-z ]*error: " errors "${err}")
+  list(LENGTH errors n)
+  if(NOT n EQUAL 1)
+    message(FATAL_ERROR "expected exactly one error line on stderr")
+  endif()
+endif()
+if(DEFINED EXPECT_OUTPUT AND NOT out MATCHES "${EXPECT_OUTPUT}")
+  message(FATAL_ERROR "stdout does not match '${EXPECT_OUTPUT}'")
+endif()
+if(DEFINED EXPECT_FILE AND NOT EXISTS ${EXPECT_FILE})
+  message(FATAL_ERROR "${EXPECT_FILE} was not written")
+endif()
+# -DCHECK_EN_DECREASES=ON: the printed E_n of the result must be below the input's
+if(CHECK_EN_DECREASES)
+  if(NOT out MATCHES "E_n \\(degrees\\): input ([0-9.e+-]+), denoised ([0-9.e+-]+)")
+    message(FATAL_ERROR "no E_n line")
+  endif()
+  if(NOT CMAKE_MATCH_2 LESS CMAKE_MATCH_1)
+    message(FATAL_ERROR "E_n did not decrease: ${CMAKE_MATCH_1} -> ${CMAKE_MATCH_2}")
+  endif()
+endif()
