@@ -351,6 +351,7 @@ TEST(IntrinsicDenoisingInput, InvalidParametersThrow)
   EXPECT_THROW(PMP::intrinsic_denoising(mesh, CGAL::parameters::sigma_range(0.)), std::invalid_argument);
   EXPECT_THROW(PMP::intrinsic_denoising(mesh, CGAL::parameters::sigma_spatial(-1.)), std::invalid_argument);
   EXPECT_THROW(PMP::intrinsic_denoising(mesh, CGAL::parameters::neighbor_radius(0.)), std::invalid_argument);
+  EXPECT_THROW(PMP::intrinsic_denoising(mesh, CGAL::parameters::neighbor_radius(-1.)), std::invalid_argument);
   EXPECT_THROW(PMP::intrinsic_denoising(mesh, CGAL::parameters::spatial_exponent(std::nan(""))),
                std::invalid_argument);
 }

@@ -63,9 +63,9 @@ double read_radius(const NamedParameters& np, const char* fname, double unit)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  const double absolute = choose_parameter(get_parameter(np, internal_np::neighbor_radius), -1.);
-  if(absolute != -1.)
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::neighbor_radius_t>::value)
   {
+    const double absolute = get_parameter(np, internal_np::neighbor_radius);
     require_positive(absolute, fname, "neighbor_radius");
     return absolute;
   }
