@@ -91,15 +91,10 @@ struct Intrinsic_kernel
       return sum;
     return std::pow(sum, 2. / p);
   }
-  // g(d^s; sigma_s) g(d^r; sigma_r) from the two path sums
-  double weight(double spatial_sum, double range_sum) const
-  {
-    const double ds2 = squared_distance(spatial_sum, spatial_exponent);
-    const double dr2 = squared_distance(range_sum, range_exponent);
-    return exp_nonpositive(-ds2 / (2. * sigma_spatial * sigma_spatial) - dr2 / (2. * sigma_range * sigma_range));
-  }
-  // weight[k] = weight(spatial[k], range[k]) for k < n; one plain loop per
-  // exponent case, so that the common ones (1 and 2) vectorise
+  // weight[k] = g(d^s; sigma_s) g(d^r; sigma_r) from the path sums spatial[k]
+  // (= (d^s)^n) and range[k] (= (d^r)^m), for k < n; one plain loop per
+  // exponent case, free of pow for the common ones (1 and 2); GCC does not
+  // vectorise it under -frounding-math, which CGAL adds to every build
   void weights(const double* spatial, const double* range, std::size_t n, double* weight) const
   {
     const double a = 1. / (2. * sigma_spatial * sigma_spatial), b = 1. / (2. * sigma_range * sigma_range);
