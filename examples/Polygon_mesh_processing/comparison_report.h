@@ -181,15 +181,33 @@ inline std::string table_path(const std::string& html_path)
   return (has_ext ? html_path.substr(0, dot) : html_path) + ".csv";
 }
 
+// The page's parts: an empty string if they can be read, else a one-line error.
+inline std::string check_report_files()
+{
+#if defined(DENOISING_RENDER_DIR) && defined(DENOISING_THREE_JS)
+  const std::string render_dir = DENOISING_RENDER_DIR, three_path = DENOISING_THREE_JS;
+  for(const std::string& f : {render_dir + "/report_template.html", render_dir + "/viewer.js"})
+    if(!std::ifstream(f))
+      return "report: cannot read the page part " + f;
+  if(!std::ifstream(three_path))
+    return "report: three.js build file " + three_path + " is missing: run `npm ci` in tools/render";
+  return std::string();
+#else
+  return "report: this program was built without the page's scripts (DENOISING_RENDER_DIR / DENOISING_THREE_JS)";
+#endif
+}
+
 // Writes the page to `html_path` and the table to table_path(html_path).
 // Returns an empty string on success, else a one-line error.
 inline std::string write_report(const std::string& html_path, const Report& report)
 {
+  const std::string missing = check_report_files();
+  if(!missing.empty())
+    return missing;
 #if defined(DENOISING_RENDER_DIR) && defined(DENOISING_THREE_JS)
   const std::string render_dir = DENOISING_RENDER_DIR, three_path = DENOISING_THREE_JS;
 #else
   const std::string render_dir, three_path;
-  return "report: this program was built without the page's scripts (DENOISING_RENDER_DIR / DENOISING_THREE_JS)";
 #endif
   std::string page, viewer, three;
   if(!internal::read_file(render_dir + "/report_template.html", page) ||
