@@ -35,9 +35,9 @@ namespace denoising_report
 struct Entry
 {
   std::string label;
-  std::vector<float> positions;         // x y z per vertex
-  std::vector<std::uint32_t> triangles; // three vertex numbers per face
-  std::vector<float> face_errors;       // degrees per face; empty: no heat map
+  std::vector<float> positions;                         // x y z per vertex
+  std::vector<std::uint32_t> triangles;                 // three vertex numbers per face
+  std::vector<float> face_errors;                       // degrees per face; empty: no heat map
   double En = std::numeric_limits<double>::quiet_NaN(); // NaN: empty cell
   double Ev = std::numeric_limits<double>::quiet_NaN();
   double seconds = std::numeric_limits<double>::quiet_NaN();
@@ -55,8 +55,7 @@ struct Report
 
 // The vertices and triangles of `mesh`; with `reference` (same faces), the
 // angle in degrees between each face normal and the reference's.
-template <typename Mesh>
-Entry make_entry(const std::string& label, const Mesh& mesh, const Mesh* reference = nullptr)
+template <typename Mesh> Entry make_entry(const std::string &label, const Mesh &mesh, const Mesh *reference = nullptr)
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   Entry e;
@@ -66,10 +65,10 @@ Entry make_entry(const std::string& label, const Mesh& mesh, const Mesh* referen
   for(vertex_descriptor v : vertices(mesh))
   {
     number.emplace(v, std::uint32_t(number.size()));
-    const auto& p = get(vpm, v);
+    const auto &p = get(vpm, v);
     e.positions.insert(e.positions.end(), {float(p.x()), float(p.y()), float(p.z())});
   }
-  auto normals = [](const Mesh& m)
+  auto normals = [](const Mesh &m)
   {
     std::vector<std::array<double, 3>> out;
     const auto pm = get(CGAL::vertex_point, m);
@@ -80,7 +79,7 @@ Entry make_entry(const std::string& label, const Mesh& mesh, const Mesh* referen
       for(auto v : CGAL::vertices_around_face(halfedge(f, m), m))
         if(k < 3)
         {
-          const auto& p = get(pm, v);
+          const auto &p = get(pm, v);
           q[k++] = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
         }
       const double a[3] = {q[1][0] - q[0][0], q[1][1] - q[0][1], q[1][2] - q[0][2]};
@@ -102,7 +101,8 @@ Entry make_entry(const std::string& label, const Mesh& mesh, const Mesh* referen
       const double cross = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
       const double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
       // a face of zero area counts as 0, as in face_normal_error()
-      e.face_errors.push_back(cross == 0. && dot == 0. ? 0.f : float(std::atan2(cross, dot) * (180. / 3.14159265358979323846)));
+      e.face_errors.push_back(
+          cross == 0. && dot == 0. ? 0.f : float(std::atan2(cross, dot) * (180. / 3.14159265358979323846)));
     }
   }
   return e;
@@ -111,10 +111,10 @@ Entry make_entry(const std::string& label, const Mesh& mesh, const Mesh* referen
 namespace internal
 {
 
-inline std::string base64(const void* data, std::size_t bytes)
+inline std::string base64(const void *data, std::size_t bytes)
 {
-  static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  const unsigned char* s = static_cast<const unsigned char*>(data);
+  static const char *digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  const unsigned char *s = static_cast<const unsigned char *>(data);
   std::string out;
   out.reserve((bytes + 2) / 3 * 4);
   for(std::size_t i = 0; i < bytes; i += 3)
@@ -129,8 +129,24 @@ inline std::string base64(const void* data, std::size_t bytes)
   return out;
 }
 
+// per-face errors for the heat map, in hundredths of a degree (Uint16,
+// little-endian, base64): half the size of floats, finer than any colour step
+inline std::string centidegrees(const std::vector<float> &degrees)
+{
+  std::vector<unsigned char> bytes;
+  bytes.reserve(2 * degrees.size());
+  for(float d : degrees)
+  {
+    const double c = std::isfinite(d) ? std::min(65535., std::max(0., std::round(double(d) * 100.))) : 65535.;
+    const unsigned v = unsigned(c);
+    bytes.push_back(static_cast<unsigned char>(v & 255));
+    bytes.push_back(static_cast<unsigned char>(v >> 8));
+  }
+  return base64(bytes.data(), bytes.size());
+}
+
 // a JSON string (labels and titles are plain text)
-inline std::string quote(const std::string& s)
+inline std::string quote(const std::string &s)
 {
   std::string out = "\"";
   for(char c : s)
@@ -159,7 +175,7 @@ inline std::string number(double x)
   return buf;
 }
 
-inline bool read_file(const std::string& path, std::string& out)
+inline bool read_file(const std::string &path, std::string &out)
 {
   std::ifstream in(path, std::ios::binary);
   if(!in)
@@ -173,7 +189,7 @@ inline bool read_file(const std::string& path, std::string& out)
 } // namespace internal
 
 // FILE.csv for FILE.html
-inline std::string table_path(const std::string& html_path)
+inline std::string table_path(const std::string &html_path)
 {
   const std::size_t dot = html_path.rfind('.');
   const std::size_t slash = html_path.find_last_of("/\\");
@@ -186,7 +202,7 @@ inline std::string check_report_files()
 {
 #if defined(DENOISING_RENDER_DIR) && defined(DENOISING_THREE_JS)
   const std::string render_dir = DENOISING_RENDER_DIR, three_path = DENOISING_THREE_JS;
-  for(const std::string& f : {render_dir + "/report_template.html", render_dir + "/viewer.js"})
+  for(const std::string &f : {render_dir + "/report_template.html", render_dir + "/viewer.js"})
     if(!std::ifstream(f))
       return "report: cannot read the page part " + f;
   if(!std::ifstream(three_path))
@@ -199,7 +215,7 @@ inline std::string check_report_files()
 
 // Writes the page to `html_path` and the table to table_path(html_path).
 // Returns an empty string on success, else a one-line error.
-inline std::string write_report(const std::string& html_path, const Report& report)
+inline std::string write_report(const std::string &html_path, const Report &report)
 {
   const std::string missing = check_report_files();
   if(!missing.empty())
@@ -217,11 +233,11 @@ inline std::string write_report(const std::string& html_path, const Report& repo
     return "report: three.js build file " + three_path + " is missing: run `npm ci` in tools/render";
 
   // the JSON data: identical triangle lists are stored once
-  std::vector<const std::vector<std::uint32_t>*> lists;
+  std::vector<const std::vector<std::uint32_t> *> lists;
   std::ostringstream meshes;
   for(std::size_t i = 0; i < report.entries.size(); ++i)
   {
-    const Entry& e = report.entries[i];
+    const Entry &e = report.entries[i];
     std::size_t list = 0;
     while(list < lists.size() && *lists[list] != e.triangles)
       ++list;
@@ -231,9 +247,7 @@ inline std::string write_report(const std::string& html_path, const Report& repo
     meshes << (i ? ",\n" : "") << "{\"label\":" << internal::quote(e.label) << ",\"positions\":\""
            << (emptied ? std::string() : internal::base64(e.positions.data(), e.positions.size() * sizeof(float)))
            << "\",\"faces\":" << list << ",\"errors\":"
-           << (e.face_errors.empty()
-                   ? std::string("null")
-                   : "\"" + internal::base64(e.face_errors.data(), e.face_errors.size() * sizeof(float)) + "\"")
+           << (e.face_errors.empty() ? std::string("null") : "\"" + internal::centidegrees(e.face_errors) + "\"")
            << "}";
   }
   std::ostringstream data;
@@ -249,11 +263,11 @@ inline std::string write_report(const std::string& html_path, const Report& repo
   csv << "label,E_n,E_v,seconds\n";
   for(std::size_t i = 0; i < report.entries.size(); ++i)
   {
-    const Entry& e = report.entries[i];
+    const Entry &e = report.entries[i];
     data << (i ? ",\n" : "") << "{\"label\":" << internal::quote(e.label) << ",\"E_n\":" << internal::number(e.En)
          << ",\"E_v\":" << internal::number(e.Ev) << ",\"seconds\":" << internal::number(e.seconds) << "}";
     std::string label = e.label;
-    for(char& c : label)
+    for(char &c : label)
       if(c == ',' || c == '\n')
         c = ' ';
     auto cell = [](double x) { return std::isfinite(x) ? internal::number(x) : std::string(); };
@@ -264,7 +278,7 @@ inline std::string write_report(const std::string& html_path, const Report& repo
   // paste the parts into the template's placeholders, found in the template
   // itself and replaced from the last one back, so pasted text is never searched
   const std::string data_text = data.str();
-  const std::pair<const char*, const std::string*> parts[] = {
+  const std::pair<const char *, const std::string *> parts[] = {
       {"@REPORT_DATA@", &data_text}, {"@THREE_MODULE@", &three}, {"@VIEWER_JS@", &viewer}};
   std::vector<std::pair<std::size_t, std::size_t>> at; // (position, part)
   for(std::size_t k = 0; k < 3; ++k)
@@ -276,7 +290,7 @@ inline std::string write_report(const std::string& html_path, const Report& repo
     at.emplace_back(pos, k);
   }
   std::sort(at.rbegin(), at.rend());
-  for(const auto& a : at)
+  for(const auto &a : at)
     page.replace(a.first, std::string(parts[a.second].first).size(), *parts[a.second].second);
 
   std::ofstream out(html_path, std::ios::binary);

@@ -314,8 +314,7 @@ std::string check_method_options(const Method_settings &m, const po::variables_m
 
 // Runs a classic method with its defaults; on failure `mesh` may be changed
 // and a one-line message is returned.
-template <typename ConcurrencyTag>
-std::string run_classic(Mesh &mesh, const std::string &method)
+template <typename ConcurrencyTag> std::string run_classic(Mesh &mesh, const std::string &method)
 {
   try
   {

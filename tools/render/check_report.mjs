@@ -6,7 +6,8 @@
 //   - dragging one canvas turns every camera (linked cameras),
 //   - the heat-map toggle recolours the meshes that have errors,
 //   - the table shown and the JSON embedded in the page hold the numbers of
-//     the CSV the writer put next to the page (FILE.csv for FILE.html).
+//     the CSV the writer put next to the page (FILE.csv for FILE.html),
+//   - the mean of each mesh's per-face errors (the heat map) is its E_n.
 // Exit status 0 if all hold, 1 otherwise (one line per failure on stderr).
 //
 // Usage: node check_report.mjs REPORT.html [--csv FILE.csv] [--min-pixels N]
@@ -84,6 +85,21 @@ try {
   data.meshes.forEach((m, i) => {
     if (m.errors && heat[i] && heat[i].count >= minPixels && heat[i].sum === noHeat[i].sum)
       fail(`canvas "${m.label}": the heat map toggle changed nothing`);
+  });
+
+  // the heat map's per-face errors average to the table's E_n (eq. 12;
+  // stored in hundredths of a degree, so within 0.01)
+  const means = await page.evaluate(() => JSON.parse(document.getElementById('report-data').textContent).meshes.map((m) => {
+    if (!m.errors) return null;
+    const e = DenoisingViewer.decode(m.errors, Uint16Array);
+    let sum = 0;
+    for (const c of e) sum += c / 100;
+    return e.length ? sum / e.length : null;
+  }));
+  means.forEach((mean, i) => {
+    const En = rows[i] ? rows[i].E_n : null;
+    if (mean !== null && En !== null && Math.abs(mean - En) > 0.01)
+      fail(`mesh "${rows[i].label}": mean per-face error ${mean.toFixed(4)} degrees, E_n ${En}`);
   });
 
   // the table shown and the JSON embedded match the CSV

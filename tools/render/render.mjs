@@ -57,7 +57,7 @@ if (opt.mesh) {
   const { pos, tri } = readOff(opt.mesh);
   let errors = null;
   if (opt.errors) {
-    errors = Float32Array.from(fs.readFileSync(opt.errors, 'utf8').split(/\s+/).filter((s) => s).map(Number));
+    errors = Uint16Array.from(fs.readFileSync(opt.errors, 'utf8').split(/\s+/).filter((s) => s).map((x) => Math.min(65535, Math.round(Number(x) * 100))));
     if (errors.length !== tri.length / 3) throw new Error(`${opt.errors}: ${errors.length} values for ${tri.length / 3} faces`);
   }
   tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'denoising-render-'));

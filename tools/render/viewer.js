@@ -8,7 +8,7 @@
 //   { title, heatMax (degrees), view: {dir: [x,y,z], up: [x,y,z]},
 //     faceLists: [base64 Uint32 triangle indices, ...],
 //     meshes: [{label, positions: base64 Float32 xyz, faces: index into faceLists,
-//               errors: base64 Float32 per-face degrees or null}],
+//               errors: base64 Uint16 per-face hundredths of a degree, or null}],
 //     table: [{label, E_n, E_v, seconds}] }
 // URL hash options (used by render.mjs): tile=PIXELS, cols=N, heat=1, static=1.
 /* exported DenoisingViewer */
@@ -91,7 +91,7 @@ var DenoisingViewer = (function () {
     for (const m of data.meshes) {
       const pos = decode(m.positions, Float32Array);
       const tri = faceLists[m.faces];
-      const errors = m.errors ? decode(m.errors, Float32Array) : null;
+      const errors = m.errors ? Float32Array.from(decode(m.errors, Uint16Array), (c) => c / 100) : null;
       // non-indexed: each face its own three vertices, so normals are flat
       const nf = pos.length > 0 ? tri.length / 3 : 0;
       const p = new Float32Array(nf * 9);
@@ -157,7 +157,18 @@ var DenoisingViewer = (function () {
     const view = data.view || { dir: [1, 0.6, 1.4], up: [0, 1, 0] };
     const up = new THREE.Vector3().fromArray(view.up).normalize();
     const dir0 = new THREE.Vector3().fromArray(view.dir).normalize();
-    const orbit = { q: new THREE.Quaternion(), distance: radius / Math.sin((15 * Math.PI) / 180) };
+    // the closest distance at which the box's corners fit the 30-degree field of view, 5% margin
+    const right0 = new THREE.Vector3().crossVectors(up, dir0).normalize();
+    const up0 = new THREE.Vector3().crossVectors(dir0, right0);
+    const t = Math.tan((15 * Math.PI) / 180) * 0.95;
+    let distance = radius * 1e-3;
+    for (let k = 0; k < 8; ++k) {
+      const c = new THREE.Vector3(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z).sub(centre);
+      const z = c.dot(dir0);
+      distance = Math.max(distance, z + Math.abs(c.dot(right0)) / t, z + Math.abs(c.dot(up0)) / t);
+    }
+    if (box.isEmpty()) distance = 1;
+    const orbit = { q: new THREE.Quaternion(), distance };
 
     function renderAll() {
       const dir = dir0.clone().applyQuaternion(orbit.q);
