@@ -55,6 +55,7 @@ const canvasStats = (page) => page.evaluate(() => [...document.querySelectorAll(
 }));
 
 const { context, close } = await launch();
+let data = { meshes: [] };
 try {
   const { page, errors } = await openReport(context, html);
   for (const e of errors) fail('console error: ' + e);
@@ -78,7 +79,7 @@ try {
   }
 
   // heat map: meshes with errors change colour
-  const data = await page.evaluate(() => JSON.parse(document.getElementById('report-data').textContent));
+  data = await page.evaluate(() => JSON.parse(document.getElementById('report-data').textContent));
   const noHeat = await canvasStats(page);
   await page.locator('#heat').check().catch(() => {});
   const heat = await canvasStats(page);
@@ -123,4 +124,6 @@ if (failures.length) {
   for (const f of failures) console.error('check_report: ' + f);
   process.exit(1);
 }
-console.log(`check_report: ${html}: ${rows.length} meshes drawn, cameras linked, heat map toggles, table matches ${csv}`);
+const withErrors = data.meshes.filter((m) => m.errors).length;
+console.log(`check_report: ${html}: ${rows.length} meshes drawn, cameras linked, heat map recolours ${withErrors} ` +
+            `mesh(es) with errors, table matches ${csv}`);
