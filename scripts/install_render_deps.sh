@@ -3,7 +3,9 @@
 # (tools/render): Debian's chromium, node/npm when absent, and the pinned node
 # modules (three, playwright-core) from tools/render/package-lock.json.
 # Run as root on Debian 12 (or with sudo). Never downloads a browser: the
-# tests drive /usr/bin/chromium.
+# tests drive /usr/bin/chromium. Measured on the development machine (Debian 12,
+# most of chromium's libraries already present): apt-get update + install of
+# chromium 16 s (17 packages), npm ci 4 s (2 packages, 38 MB).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SUDO=""

@@ -12,6 +12,9 @@ export const executablePath = process.env.CHROMIUM || '/usr/bin/chromium';
 export async function launch() {
   if (!fs.existsSync(executablePath)) throw new Error(`chromium not found at ${executablePath} (apt-get install chromium)`);
   const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'denoising-chromium-'));
+  // WebGL without a GPU: SwiftShader through ANGLE. Chromium 156 falls back to
+  // it by itself too, but newer ones refuse the fallback unless
+  // --enable-unsafe-swiftshader is given, so both are explicit.
   const context = await chromium.launchPersistentContext(userDataDir, {
     executablePath,
     headless: true,
@@ -19,7 +22,7 @@ export async function launch() {
     deviceScaleFactor: 1,
     args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
            '--disable-background-networking', '--disable-component-update', '--disable-sync',
-           '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+           '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-dev-shm-usage'],
   });
   const close = async () => {
     await context.close();
