@@ -4,8 +4,9 @@
 //   node render.mjs REPORT.html --out FILE.png [--tile 300] [--cols 3] [--heat]
 //       a contact sheet of every mesh of a comparison report (written by
 //       comparison_report.h), each tile flat shaded from the report's camera
-//   node render.mjs --mesh MESH.off [--errors ERRORS.txt] --out FILE.png [--tile 400] [--heat]
-//       one mesh (OFF, triangles); ERRORS.txt: one per-face error (degrees) a line
+//   node render.mjs --mesh MESH.off [--errors ERRORS.txt] --out FILE.png [--tile 400] [--heat] [--heat-max DEG]
+//       one mesh (OFF; polygons are fanned into triangles); ERRORS.txt: one
+//       per-face error (degrees) a line, drawn full red from DEG (default 15)
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -14,11 +15,11 @@ import { launch, buildPage, openReport } from './browser.mjs';
 function usage(msg) {
   if (msg) console.error('render.mjs: ' + msg);
   console.error('usage: node render.mjs REPORT.html --out FILE.png [--tile N] [--cols N] [--heat]\n' +
-                '       node render.mjs --mesh MESH.off [--errors FILE] --out FILE.png [--tile N] [--heat]');
+                '       node render.mjs --mesh MESH.off [--errors FILE] --out FILE.png [--tile N] [--heat] [--heat-max DEG]');
   process.exit(2);
 }
 
-const opt = { tile: 300, cols: 0, heat: false };
+const opt = { tile: 300, cols: 0, heat: false, heatMax: 15 };
 const args = process.argv.slice(2);
 for (let i = 0; i < args.length; ++i) {
   const a = args[i];
@@ -26,12 +27,14 @@ for (let i = 0; i < args.length; ++i) {
   else if (a === '--tile') opt.tile = parseInt(args[++i], 10);
   else if (a === '--cols') opt.cols = parseInt(args[++i], 10);
   else if (a === '--heat') opt.heat = true;
+  else if (a === '--heat-max') opt.heatMax = Number(args[++i]);
   else if (a === '--mesh') opt.mesh = args[++i];
   else if (a === '--errors') opt.errors = args[++i];
   else if (a.startsWith('--')) usage('unknown option ' + a);
   else opt.report = a;
 }
 if (!opt.out || (!opt.report === !opt.mesh)) usage();
+if (!(opt.tile > 0) || !(opt.heatMax > 0)) usage('--tile and --heat-max must be positive');
 
 function readOff(file) {
   const tokens = fs.readFileSync(file, 'utf8').replace(/#[^\n]*/g, ' ').split(/\s+/).filter((s) => s);
@@ -63,7 +66,7 @@ if (opt.mesh) {
   tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'denoising-render-'));
   file = path.join(tmp, 'mesh.html');
   fs.writeFileSync(file, buildPage({
-    title: path.basename(opt.mesh), heatMax: 15, faceLists: [b64(tri)],
+    title: path.basename(opt.mesh), heatMax: opt.heatMax, faceLists: [b64(tri)],
     meshes: [{ label: '', positions: b64(pos), faces: 0, errors: errors ? b64(errors) : null }], table: [],
   }));
   opt.cols = 1;
