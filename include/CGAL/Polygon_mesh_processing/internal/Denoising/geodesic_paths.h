@@ -24,8 +24,13 @@
 #include <cmath>
 #include <cstdint>
 #include <exception>
+#include <memory>
 #include <utility>
 #include <vector>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/enumerable_thread_specific.h>
+#endif
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -199,6 +204,9 @@ public:
       face_local_(m.number_of_faces(), 0), vertex_stamp_(m.number_of_vertices(), no_face),
       tested_stamp_(m.number_of_faces(), no_face), bridge_stamp_(m.number_of_vertices(), no_face)
   {}
+  // shortest_path_ refers to patch_: neither copied nor moved
+  Geodesic_patch_solver(const Geodesic_patch_solver&) = delete;
+  Geodesic_patch_solver& operator=(const Geodesic_patch_solver&) = delete;
 
   // Builds the patch of face i with the given neighbours and the shortest-path
   // structure rooted at c_i. Returns false (every path_to() then fails) if
@@ -664,10 +672,22 @@ Path_forest geodesic_paths(const Flat_mesh& m, const Face_data& fd, const Csr& n
   std::vector<std::uint32_t> counts(nf, 0);
   const double unit = options.length_unit > 0. ? options.length_unit : 1.;
 
+  // one solver per thread (its stamps are as large as the mesh), made on the
+  // thread's first chunk and kept for its next ones
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::enumerable_thread_specific<std::unique_ptr<Geodesic_patch_solver>> solvers;
+#endif
   for_each_chunk<ConcurrencyTag>(
       nchunks,
       [&](std::size_t cb, std::size_t ce) {
-        Geodesic_patch_solver solver(m, fd, options.patch_rings);
+#ifdef CGAL_LINKED_WITH_TBB
+        std::unique_ptr<Geodesic_patch_solver>& solver_ptr = solvers.local();
+#else
+        std::unique_ptr<Geodesic_patch_solver> solver_ptr;
+#endif
+        if(!solver_ptr)
+          solver_ptr.reset(new Geodesic_patch_solver(m, fd, options.patch_rings));
+        Geodesic_patch_solver& solver = *solver_ptr;
         std::vector<Geodesic_path> paths;
         std::vector<char> reached;
         std::vector<std::pair<double, std::size_t>> order;
