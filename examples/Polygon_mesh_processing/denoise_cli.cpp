@@ -62,7 +62,7 @@ struct Settings
 {
   std::string input, output, reference, noisy_output;
   // signed, so that a negative value is caught (Boost would wrap it into an unsigned)
-  long long iterations = 30, vertex_iterations = 2, patch_rings = 1, seed = 1;
+  long long iterations = 30, vertex_iterations = 2, patch_rings = 0, seed = 1;
   double sigma_spatial = 0.4, sigma_range = 0.4, radius = 0., relative_radius = 4.;
   double spatial_exponent = 1., range_exponent = 1.;
   std::string paths = "square", threads = "all";

@@ -116,7 +116,8 @@ Path_forest make_paths(const NamedParameters& np, Intrinsic_path_strategy strate
   case Intrinsic_path_strategy::GEODESIC:
   {
     Geodesic_path_options go;
-    go.patch_rings = parameters::choose_parameter(parameters::get_parameter(np, internal_np::geodesic_patch_rings), 1u);
+    go.patch_rings = parameters::choose_parameter(parameters::get_parameter(np, internal_np::geodesic_patch_rings),
+                                                  go.patch_rings);
     go.step_length = use_step_length;
     go.length_unit = unit > 0. ? unit : 1.;
     return geodesic_paths<ConcurrencyTag>(*faces, *fd, neighbors, go); // with its own step lengths
