@@ -20,12 +20,12 @@
 
 #include <MeshSDFilter/MeshNormalDenoising.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
 #include <iostream>
 #include <sstream>
-#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -33,13 +33,13 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-static TriMesh to_openmesh(const Mesh& m)
+static TriMesh to_openmesh(const Mesh &m)
 {
   TriMesh t;
   std::vector<TriMesh::VertexHandle> handles;
   for(auto v : vertices(m))
   {
-    const K::Point_3& p = m.point(v);
+    const K::Point_3 &p = m.point(v);
     handles.push_back(t.add_vertex(TriMesh::Point(p.x(), p.y(), p.z())));
   }
   for(auto f : faces(m))
@@ -55,7 +55,7 @@ static TriMesh to_openmesh(const Mesh& m)
 // the best of --grid on this input
 static const double grid_lambda = 1., grid_eta = 1., grid_mu = 0.35;
 
-int main(int argc, char** argv)
+int main(int argc, char **argv)
 {
   const bool row_only = argc > 1 && std::string(argv[1]) == "--row";
   Mesh reference;
@@ -67,7 +67,8 @@ int main(int argc, char** argv)
   Mesh noisy = reference;
   PMP::add_gaussian_noise(noisy, 0.3, CGAL::parameters::random_seed(1));
   SDFilter::MeshDenoisingParameters param; // the library's defaults, then the grid's best
-  const auto run = [&noisy](const SDFilter::MeshDenoisingParameters& p, Mesh& r) {
+  const auto run = [&noisy](const SDFilter::MeshDenoisingParameters &p, Mesh &r)
+  {
     TriMesh mesh = to_openmesh(noisy);
     Eigen::Vector3d center;
     double scale;
@@ -79,7 +80,7 @@ int main(int argc, char** argv)
     r = noisy;
     for(auto v : vertices(r))
     {
-      const TriMesh::Point& q = out.point(TriMesh::VertexHandle(int(std::size_t(v))));
+      const TriMesh::Point &q = out.point(TriMesh::VertexHandle(int(std::size_t(v))));
       r.point(v) = K::Point_3(q[0], q[1], q[2]);
     }
     return ok;
@@ -96,12 +97,13 @@ int main(int argc, char** argv)
           p.eta = eta;
           p.mu = p.nu = mu;
           std::ostringstream silence;
-          std::streambuf* const saved = std::cout.rdbuf(silence.rdbuf());
+          std::streambuf *const saved = std::cout.rdbuf(silence.rdbuf());
           Mesh r;
           const bool ok = run(p, r);
           std::cout.rdbuf(saved);
           const double En = ok ? PMP::face_normal_error(r, reference) : 1e30;
-          std::printf("lambda %g eta %g mu = nu %g: E_n %.3f%s\n", lambda, eta, mu, En, En < best ? " (best so far)" : "");
+          std::printf("lambda %g eta %g mu = nu %g: E_n %.3f%s\n", lambda, eta, mu, En,
+                      En < best ? " (best so far)" : "");
           std::fflush(stdout);
           best = (std::min)(best, En);
         }
@@ -127,7 +129,7 @@ int main(int argc, char** argv)
     {
       // the timed part: conversion to OpenMesh and back included
       std::ostringstream silence; // the library reports progress on std::cout
-      std::streambuf* const saved = std::cout.rdbuf(silence.rdbuf());
+      std::streambuf *const saved = std::cout.rdbuf(silence.rdbuf());
       const std::clock_t c0 = std::clock();
       const auto t0 = std::chrono::steady_clock::now();
       Mesh r;
