@@ -145,7 +145,7 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
   const D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname);
   std::vector<D::Vec3> out;
   D::intrinsic_filter_pass<ConcurrencyTag>(s.paths, s.input_faces.normals, s.input_faces.areas, s.kernel, out);
-  maps.write_face_vectors(tmesh, out, filtered_normals);
+  maps.write_face_vectors(tmesh, s.mesh.in_input_order(out), filtered_normals);
 }
 
 /*!
@@ -261,7 +261,7 @@ void intrinsic_denoising(TriangleMesh& tmesh, const NamedParameters& np = parame
   }
   maps.write_points(tmesh, points);
   if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
-    maps.write_face_vectors(tmesh, filtered, get_parameter(np, internal_np::face_normal));
+    maps.write_face_vectors(tmesh, s.mesh.in_input_order(filtered), get_parameter(np, internal_np::face_normal));
 }
 
 } // namespace Polygon_mesh_processing

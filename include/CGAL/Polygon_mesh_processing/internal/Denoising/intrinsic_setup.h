@@ -166,6 +166,15 @@ Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParam
   compute_face_data<ConcurrencyTag>(s.mesh, s.mesh.points, s.input_faces);
   const double d = mean_adjacent_centroid_distance(s.mesh, s.input_faces);
   s.radius = read_radius(np, fname, d);
+  if(strategy == Intrinsic_path_strategy::SQUARE_PATTERN || strategy == Intrinsic_path_strategy::DIRECT)
+    reorder_faces_for_locality<ConcurrencyTag>(s.mesh, s.input_faces); // same paths; results in s.mesh.input_face order
+  if(strategy == Intrinsic_path_strategy::SQUARE_PATTERN) // each neighbourhood searched and used at once
+  {
+    s.paths = square_pattern_paths_within<ConcurrencyTag>(s.mesh, s.input_faces, s.radius);
+    if(step_length)
+      set_step_lengths(s.paths, s.input_faces.centroids, d > 0. ? d : 1.);
+    return s;
+  }
   s.neighbors = geometric_neighborhoods<ConcurrencyTag>(s.mesh, s.input_faces.centroids, s.radius);
   s.paths = make_paths<ConcurrencyTag>(np, strategy, step_length, d, s.input_faces.centroids,
                                        Face_vertex_adjacency{s.mesh}, s.neighbors, &s.mesh, &s.input_faces, fname);
