@@ -289,7 +289,8 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
   const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
   constexpr bool iterations_given = !is_default_parameter<NamedParameters, internal_np::number_of_iterations_t>::value;
   report.automatic_parameters = choose_parameter(get_parameter(np, internal_np::automatic_parameters), true);
-  const bool stop_rule = choose_parameter(get_parameter(np, internal_np::stop_when_converged), !iterations_given);
+  const bool stop_rule = choose_parameter(get_parameter(np, internal_np::stop_when_converged),
+                                         report.automatic_parameters && !iterations_given);
   const double given_noise = choose_parameter(get_parameter(np, internal_np::noise_level), -1.);
   if constexpr(!is_default_parameter<NamedParameters, internal_np::noise_level_t>::value)
     if(!(given_noise >= 0.) || !std::isfinite(given_noise))

@@ -49,7 +49,7 @@ CGAL_add_named_parameter(automatic_parameters_t, automatic_parameters, automatic
 // the noise level in units of the mean edge length, instead of its estimate
 CGAL_add_named_parameter(noise_level_t, noise_level, noise_level)
 // whether the iterations stop by the no-ground-truth rule (default: unless
-// number_of_iterations is given)
+// number_of_iterations is given or automatic_parameters is false)
 CGAL_add_named_parameter(stop_when_converged_t, stop_when_converged, stop_when_converged)
 // a callable (iterations done, maximum iterations) called after each iteration
 CGAL_add_named_parameter(progress_callback_t, progress_callback, progress_callback)
