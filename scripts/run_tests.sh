@@ -4,6 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
+# chromium, node and tools/render's node modules: the HTML report's browser tests
+bash scripts/install_render_deps.sh
 bash scripts/build.sh
 cd build
 ctest --output-on-failure -j"$(nproc)"

@@ -170,8 +170,6 @@ static Grid_best grid_search(const Input& in, bool trace)
   const std::vector<double> radii = {2., 3., 4., 6., 8.};
   const unsigned int kmax = 150;
   const D::Flat_mesh ref = flat(in.reference);
-  D::Face_data ref_fd;
-  D::compute_face_data<CGAL::Sequential_tag>(ref, ref.points, ref_fd);
   Grid_best best;
   for(double r : radii)
   {
@@ -179,6 +177,9 @@ static Grid_best grid_search(const Input& in, bool trace)
     const auto np = CGAL::parameters::relative_neighbor_radius(r);
     D::Intrinsic_setup base = D::make_intrinsic_setup<Tag>(in.noisy, np, maps, "grid");
     const double L = D::mean_edge_length(base.mesh);
+    // the setup may renumber faces (not vertices): reference normals in its order
+    D::Face_data ref_fd;
+    D::compute_face_data<CGAL::Sequential_tag>(base.mesh, ref.points, ref_fd);
     for(double sigma : sigmas)
     {
       D::Intrinsic_kernel kernel = base.kernel;

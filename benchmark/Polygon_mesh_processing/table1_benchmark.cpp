@@ -4,7 +4,13 @@
 // search (the best E_n wins; its setting is printed).
 //
 // Usage: table1_benchmark [--out FILE] [--models a,b,..] [--methods a,b,..] [--verbose]
+//                         [--meshes DIR] [--report DIR]
 //   --out FILE      also write the Markdown report to FILE
+//   --meshes DIR    write per model DIR/<model>/{noisy,reference,<method>}.off (the
+//                   best setting's output) and <method>_errors.txt (per-face
+//                   normal error in degrees, one a line, face order of the OFF)
+//   --report DIR    write per model the comparison page DIR/<model>.html (meshes,
+//                   linked cameras, heat map, E_n/E_v/seconds table) and DIR/<model>.csv
 //   --models        a subset of: octahedron,fandisk,prism,bunny (default: all)
 //   --methods       a subset of: FDC03,JDD03,SRML07,ZFAT11,HS13,ZDZ15,ours (default: all)
 //   --verbose       every grid setting's errors on stderr
@@ -32,14 +38,18 @@
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include "../../examples/Polygon_mesh_processing/comparison_report.h"
 #include "../../test/Polygon_mesh_processing/synthetic_meshes.h"
 
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -58,7 +68,9 @@ struct Model
   double sigma_E;
   bool large; // the bunny: small grids
   double paper_En[7], paper_Ev[7];
-  double paper_Ev_scale; // the paper's E_v unit (1e-3, 1e-2, 1e-4)
+  double paper_Ev_scale;                                                 // the paper's E_v unit (1e-3, 1e-2, 1e-4)
+  std::array<double, 3> view_dir{{1., 0.6, 1.4}}, view_up{{0., 1., 0.}}; // camera of the figures
+  double heat_max = 15.; // degrees drawn full red in the page's heat map
 };
 
 typedef std::vector<double> Setting;
@@ -75,6 +87,7 @@ struct Result
 {
   double En = 1e30, Ev = 0., seconds = 0.;
   Setting setting;
+  Mesh output; // kept only with --meshes or --report
 };
 
 // the cartesian product of per-parameter value lists
@@ -238,7 +251,7 @@ bool selected(const std::vector<std::string> &list, const std::string &name)
 
 int main(int argc, char **argv)
 {
-  std::string out_file;
+  std::string out_file, mesh_dir, report_dir;
   std::vector<std::string> model_list, method_list;
   bool verbose = false;
   for(int i = 1; i < argc; ++i)
@@ -249,11 +262,16 @@ int main(int argc, char **argv)
       model_list = split(argv[++i]);
     else if(std::strcmp(argv[i], "--methods") == 0 && i + 1 < argc)
       method_list = split(argv[++i]);
+    else if(std::strcmp(argv[i], "--meshes") == 0 && i + 1 < argc)
+      mesh_dir = argv[++i];
+    else if(std::strcmp(argv[i], "--report") == 0 && i + 1 < argc)
+      report_dir = argv[++i];
     else if(std::strcmp(argv[i], "--verbose") == 0)
       verbose = true;
     else
     {
-      std::cerr << "usage: table1_benchmark [--out FILE] [--models a,b] [--methods a,b] [--verbose]\n";
+      std::cerr << "usage: table1_benchmark [--out FILE] [--models a,b] [--methods a,b] [--verbose] [--meshes DIR] "
+                   "[--report DIR]\n";
       return 2;
     }
   }
@@ -299,6 +317,12 @@ int main(int argc, char **argv)
                       {4.98, 4.48, 3.29, 3.87, 0.71, 0.87, 0.46},
                       {11.89, 10.46, 7.45, 7.9, 3.42, 4.09, 2.77},
                       1e-2});
+  if(selected(model_list, "prism"))
+  {
+    models.back().view_dir = {{1.4, 0.9, 0.9}}; // the prism's axis is z
+    models.back().view_up = {{0., 0., 1.}};
+    models.back().heat_max = 5.; // errors are small on the prism: a finer colour scale
+  }
   if(selected(model_list, "bunny"))
   {
     Mesh m;
@@ -351,11 +375,73 @@ int main(int argc, char **argv)
           best.Ev = PMP::vertex_position_error(out, model.reference);
           best.seconds = sec;
           best.setting = s;
+          if(!mesh_dir.empty() || !report_dir.empty())
+            best.output = out;
         }
       }
       std::fprintf(stderr, "%s %s: best E_n %.3f [%s] (%zu settings, %.0f s so far)\n", model.name.c_str(),
                    method.name.c_str(), best.En, method.describe(best.setting).c_str(), grid.size(),
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    if(!mesh_dir.empty() || !report_dir.empty())
+    {
+      std::vector<std::pair<std::string, const Result *>> shown; // noisy, methods, reference
+      Result noisy_result, reference_result;
+      noisy_result.En = noisy_En[mi];
+      noisy_result.Ev = noisy_Ev[mi];
+      noisy_result.seconds = std::numeric_limits<double>::quiet_NaN();
+      noisy_result.output = noisy;
+      reference_result.En = 0.;
+      reference_result.Ev = 0.;
+      reference_result.seconds = std::numeric_limits<double>::quiet_NaN();
+      reference_result.output = model.reference;
+      shown.emplace_back("noisy", &noisy_result);
+      for(std::size_t k : method_index)
+        shown.emplace_back(all_methods[k].name, &results[mi][k]);
+      shown.emplace_back("reference", &reference_result);
+      denoising_report::Report report;
+      char title[256];
+      std::snprintf(title, sizeof(title),
+                    "%s, Gaussian noise sigma_E %.1f (seed 1): best setting of each method by E_n", model.name.c_str(),
+                    model.sigma_E);
+      report.title = title;
+      report.view_dir = model.view_dir;
+      report.view_up = model.view_up;
+      report.heat_max = model.heat_max;
+      for(const auto &item : shown)
+      {
+        report.entries.push_back(denoising_report::make_entry(item.first, item.second->output, &model.reference));
+        report.entries.back().En = item.second->En;
+        report.entries.back().Ev = item.second->Ev;
+        report.entries.back().seconds = item.second->seconds;
+      }
+      if(!mesh_dir.empty())
+      {
+        const std::string dir = mesh_dir + "/" + model.name;
+        std::filesystem::create_directories(dir);
+        for(std::size_t e = 0; e < shown.size(); ++e)
+        {
+          if(!CGAL::IO::write_polygon_mesh(dir + "/" + shown[e].first + ".off", shown[e].second->output,
+                                           CGAL::parameters::stream_precision(17)))
+          {
+            std::cerr << "cannot write " << dir << "/" << shown[e].first << ".off\n";
+            return 1;
+          }
+          std::ofstream err(dir + "/" + shown[e].first + "_errors.txt");
+          for(float x : report.entries[e].face_errors)
+            err << x << "\n";
+        }
+      }
+      if(!report_dir.empty())
+      {
+        std::filesystem::create_directories(report_dir);
+        const std::string error = denoising_report::write_report(report_dir + "/" + model.name + ".html", report);
+        if(!error.empty())
+        {
+          std::cerr << error << "\n";
+          return 1;
+        }
+      }
     }
   }
 

@@ -63,6 +63,7 @@ struct Stages
     mesh = D::make_flat_mesh(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m), get(CGAL::face_index, m), "");
     D::compute_face_data<CGAL::Sequential_tag>(mesh, mesh.points, faces);
     d = D::mean_adjacent_centroid_distance(mesh, faces);
+    D::reorder_faces_for_locality<CGAL::Sequential_tag>(mesh, faces); // as intrinsic_denoising() does
     neighbors = D::geometric_neighborhoods<CGAL::Sequential_tag>(mesh, faces.centroids, 4 * d);
     paths = D::square_pattern_paths(mesh, faces, neighbors);
   }

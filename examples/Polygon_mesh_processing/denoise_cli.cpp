@@ -7,16 +7,24 @@
 // Run `denoise --help` for the manual (also in doc/Polygon_mesh_processing/denoise_help.txt).
 // Exit status: 0 success, 1 bad input or I/O error, 2 bad usage.
 
+#include "comparison_report.h"
 #include "denoise_mesh_file.h"
 
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
+#include <CGAL/Polygon_mesh_processing/bilateral_mesh_denoising.h>
+#include <CGAL/Polygon_mesh_processing/bilateral_normal_denoising.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
+#include <CGAL/Polygon_mesh_processing/fast_feature_preserving_denoising.h>
+#include <CGAL/Polygon_mesh_processing/guided_normal_denoising.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
+#include <CGAL/Polygon_mesh_processing/l0_denoising.h>
+#include <CGAL/Polygon_mesh_processing/non_iterative_denoising.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <boost/program_options.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -54,7 +62,7 @@ struct Settings
 {
   std::string input, output, reference, noisy_output;
   // signed, so that a negative value is caught (Boost would wrap it into an unsigned)
-  long long iterations = 30, vertex_iterations = 2, patch_rings = 1, seed = 1;
+  long long iterations = 30, vertex_iterations = 2, patch_rings = 0, seed = 1;
   double sigma_spatial = 0.4, sigma_range = 0.4, radius = 0., relative_radius = 4.;
   double spatial_exponent = 1., range_exponent = 1.;
   std::string paths = "square", threads = "all";
@@ -83,6 +91,19 @@ DESCRIPTION
     paper's square pattern (section 4) by default; --paths chooses the exact
     geodesic (section 3.2, slower), the direct path i-j (a bilateral normal
     filter) or shortest paths in the face graph.
+
+    --method runs one of the package's classic denoisers instead, with its
+    documented defaults: FDC03 (bilateral_mesh_denoising), JDD03
+    (non_iterative_denoising), SRML07 (fast_feature_preserving_denoising),
+    ZFAT11 (bilateral_normal_denoising), HS13 (l0_denoising) or ZDZ15
+    (guided_normal_denoising); the options of the intrinsic filter (-k, -v,
+    sigmas, radii, exponents, paths) then do not apply and are refused.
+
+    With --report FILE.html, a self-contained comparison page is written: the
+    input (noisy input with --noise), the result and, with --reference, the
+    reference, drawn with three.js side by side with linked cameras (drag one,
+    all follow), a per-face normal error heat map (with --reference) and the
+    table of E_n, E_v and seconds; the table also goes to FILE.csv.
 
     With --noise, seeded Gaussian noise is added to INPUT first (as in the
     paper's experiments, section 5.2). With --reference, the errors E_n (mean
@@ -116,6 +137,9 @@ EXAMPLES
 
     Organic, finely detailed mesh: larger sigmas, fewer iterations:
         denoise bunny.ply --sigma-spatial 0.6 --sigma-range 0.6 --iterations 10 -o bunny_clean.ply
+
+    A classic method on the same noisy input, with a comparison page:
+        denoise fandisk.off --noise 0.3 --reference fandisk.off --method ZDZ15 --report zdz15.html -o out.off
 
     Exact geodesic paths with step lengths, single thread:
         denoise part.stl --paths geodesic --step-length --threads 1 -o part_clean.stl
@@ -249,6 +273,102 @@ private:
   std::thread thread_;
 };
 
+// --method and --report (kept apart from the intrinsic filter's Settings)
+struct Method_settings
+{
+  std::string method = "intrinsic", report;
+  int debug_empty_mesh = -1; // hidden: the report's mesh of this number loses its vertices (tests the checker)
+};
+
+const char *const classic_methods[] = {"FDC03", "JDD03", "SRML07", "ZFAT11", "HS13", "ZDZ15"};
+
+void add_method_options(po::options_description &options, po::options_description &hidden, Method_settings &m)
+{
+  // clang-format off
+  options.add_options()
+    ("method", po::value(&m.method)->value_name("NAME")->default_value(m.method),
+       "intrinsic (this package's filter), or a classic method with its defaults: FDC03, JDD03, SRML07, ZFAT11, "
+       "HS13 or ZDZ15")
+    ("report", po::value(&m.report)->value_name("FILE.html"),
+       "write a self-contained comparison page (meshes, linked cameras, heat map, E_n/E_v/seconds) and FILE.csv");
+  hidden.add_options()("debug-empty-report-mesh", po::value(&m.debug_empty_mesh));
+  // clang-format on
+}
+
+// A usage error for --method / --report, or an empty string.
+std::string check_method_options(const Method_settings &m, const po::variables_map &vm)
+{
+  if(m.method != "intrinsic" &&
+     std::find(std::begin(classic_methods), std::end(classic_methods), m.method) == std::end(classic_methods))
+    return "--method must be intrinsic, FDC03, JDD03, SRML07, ZFAT11, HS13 or ZDZ15, not '" + m.method + "'";
+  if(m.method != "intrinsic")
+    for(const char *name : {"iterations", "vertex-iterations", "sigma-spatial", "sigma-range", "radius",
+                            "relative-radius", "spatial-exponent", "range-exponent", "paths", "geodesic-rings",
+                            "step-length", "self-weight", "no-fold-guard"})
+      if(vm.count(name) && !vm[name].defaulted())
+        return std::string("--") + name + " applies to --method intrinsic only";
+  if(vm.count("report") && denoise_file::extension(m.report) != "html")
+    return "--report needs a .html file name, not '" + m.report + "'";
+  return std::string();
+}
+
+// Runs a classic method with its defaults; on failure `mesh` may be changed
+// and a one-line message is returned.
+template <typename ConcurrencyTag> std::string run_classic(Mesh &mesh, const std::string &method)
+{
+  try
+  {
+    if(method == "FDC03")
+      PMP::bilateral_mesh_denoising<ConcurrencyTag>(mesh);
+    else if(method == "JDD03")
+      PMP::non_iterative_denoising<ConcurrencyTag>(mesh);
+    else if(method == "SRML07")
+      PMP::fast_feature_preserving_denoising<ConcurrencyTag>(mesh);
+    else if(method == "ZFAT11")
+      PMP::bilateral_normal_denoising<ConcurrencyTag>(mesh);
+    else if(method == "HS13")
+      PMP::l0_denoising<ConcurrencyTag>(mesh);
+    else
+      PMP::guided_normal_denoising<ConcurrencyTag>(mesh);
+  }
+  catch(const std::exception &e)
+  {
+    return e.what();
+  }
+  return std::string();
+}
+
+// The comparison page of this run: input, result and (if given) reference.
+std::string write_cli_report(const Method_settings &m, const std::string &input_name, bool noisy, const Mesh &input,
+                             const Mesh &denoised, const Mesh *reference, double seconds)
+{
+  namespace R = denoising_report;
+  R::Report report;
+  report.title = input_name + ": " + m.method;
+  report.entries.push_back(R::make_entry(noisy ? "noisy input" : "input", input, reference));
+  report.entries.push_back(R::make_entry(m.method + " result", denoised, reference));
+  report.entries.back().seconds = seconds;
+  if(reference != nullptr)
+  {
+    try
+    {
+      report.entries[0].En = PMP::face_normal_error(input, *reference);
+      report.entries[0].Ev = PMP::vertex_position_error(input, *reference);
+      report.entries[1].En = PMP::face_normal_error(denoised, *reference);
+      report.entries[1].Ev = PMP::vertex_position_error(denoised, *reference);
+    }
+    catch(const std::exception &e)
+    {
+      return std::string("cannot compare with the reference: ") + e.what();
+    }
+    report.entries.push_back(R::make_entry("reference", *reference, reference));
+    report.entries.back().En = 0.;
+    report.entries.back().Ev = 0.;
+  }
+  report.debug_empty_entry = m.debug_empty_mesh;
+  return R::write_report(m.report, report);
+}
+
 template <typename ConcurrencyTag, typename NamedParameters>
 std::string run_denoising(Mesh &mesh, const Settings &s, const NamedParameters &np)
 {
@@ -270,6 +390,8 @@ int main(int argc, char **argv)
   po::options_description options = make_options(s);
   po::options_description hidden;
   hidden.add_options()("input", po::value(&s.input));
+  Method_settings method;
+  add_method_options(options, hidden, method);
   po::options_description all;
   all.add(options).add(hidden);
   po::positional_options_description positional;
@@ -314,6 +436,17 @@ int main(int argc, char **argv)
     return fail(exit_usage, "--impulsive must lie in [0, 1]");
   if((vm.count("impulsive") || vm.count("noisy-output")) && !vm.count("noise"))
     return fail(exit_usage, "--impulsive and --noisy-output need --noise");
+  {
+    const std::string usage = check_method_options(method, vm);
+    if(!usage.empty())
+      return fail(exit_usage, usage);
+  }
+  if(!method.report.empty())
+  {
+    const std::string missing = denoising_report::check_report_files();
+    if(!missing.empty())
+      return fail(exit_input, missing);
+  }
   if(s.output.empty())
     s.output = denoise_file::output_path(s.input);
   {
@@ -393,13 +526,20 @@ int main(int argc, char **argv)
   const auto start = std::chrono::steady_clock::now();
   {
     Elapsed_clock clock("denoising " + std::to_string(num_faces(input)) + " faces", talk);
-    problem = s.threads == "1" ? run_denoising<CGAL::Sequential_tag>(denoised, s, np)
-                               : run_denoising<CGAL::Parallel_if_available_tag>(denoised, s, np);
+    if(method.method != "intrinsic")
+      problem = s.threads == "1" ? run_classic<CGAL::Sequential_tag>(denoised, method.method)
+                                 : run_classic<CGAL::Parallel_if_available_tag>(denoised, method.method);
+    else
+      problem = s.threads == "1" ? run_denoising<CGAL::Sequential_tag>(denoised, s, np)
+                                 : run_denoising<CGAL::Parallel_if_available_tag>(denoised, s, np);
   }
   if(!problem.empty())
     return fail(exit_input, problem);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if(talk)
+  if(talk && method.method != "intrinsic")
+    std::cout << "denoised in " << seconds << " s: " << method.method << " with its defaults, threads " << s.threads
+              << "\n";
+  else if(talk)
   {
     std::ostringstream radius;
     if(s.radius > 0.)
@@ -435,5 +575,14 @@ int main(int argc, char **argv)
     return fail(exit_input, problem);
   if(talk)
     std::cout << "output: " << s.output << "\n";
+  if(!method.report.empty())
+  {
+    problem = write_cli_report(method, s.input, vm.count("noise") > 0, input, denoised,
+                               s.reference.empty() ? nullptr : &reference, seconds);
+    if(!problem.empty())
+      return fail(exit_input, problem);
+    if(talk)
+      std::cout << "report: " << method.report << " (table: " << denoising_report::table_path(method.report) << ")\n";
+  }
   return exit_ok;
 }

@@ -1,7 +1,9 @@
-# cmake -DEXE=program -DARGS="a|b" -DEXPECTED=code [-DEXPECT_OUTPUT=regex] [-DEXPECT_FILE=path] -P expect_exit_code.cmake
+# cmake -DEXE=program -DARGS="a|b" -DEXPECTED=code [-DEXPECT_OUTPUT=regex] [-DEXPECT_FILE=path]
+#       [-DEXPECT_STDERR=regex] [-DERROR_PREFIX=regex] -P expect_exit_code.cmake
 # Runs EXE with ARGS and fails unless it exits with EXPECTED, its standard
-# error is at most one line when it fails, its standard output matches
-# EXPECT_OUTPUT and EXPECT_FILE exists (when given).
+# error holds exactly one error line (ERROR_PREFIX, default "denoise: ...error: ")
+# when it fails, its standard output matches EXPECT_OUTPUT, its standard error
+# EXPECT_STDERR and EXPECT_FILE exists (when given).
 if(DEFINED EXPECT_FILE)
   file(REMOVE ${EXPECT_FILE})
 endif()
@@ -12,7 +14,10 @@ if(NOT code STREQUAL "${EXPECTED}")
   message(FATAL_ERROR "expected exit code ${EXPECTED}, got ${code}")
 endif()
 if(NOT EXPECTED EQUAL 0)
-  string(REGEX MATCHALL "denoise: [a-z ]*error: " errors "${err}")
+  if(NOT DEFINED ERROR_PREFIX)
+    set(ERROR_PREFIX "denoise: [a-z ]*error: ")
+  endif()
+  string(REGEX MATCHALL "${ERROR_PREFIX}" errors "${err}")
   list(LENGTH errors n)
   if(NOT n EQUAL 1)
     message(FATAL_ERROR "expected exactly one error line on stderr")
@@ -20,6 +25,9 @@ if(NOT EXPECTED EQUAL 0)
 endif()
 if(DEFINED EXPECT_OUTPUT AND NOT out MATCHES "${EXPECT_OUTPUT}")
   message(FATAL_ERROR "stdout does not match '${EXPECT_OUTPUT}'")
+endif()
+if(DEFINED EXPECT_STDERR AND NOT err MATCHES "${EXPECT_STDERR}")
+  message(FATAL_ERROR "stderr does not match '${EXPECT_STDERR}'")
 endif()
 if(DEFINED EXPECT_FILE AND NOT EXISTS ${EXPECT_FILE})
   message(FATAL_ERROR "${EXPECT_FILE} was not written")

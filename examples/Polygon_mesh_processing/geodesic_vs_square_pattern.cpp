@@ -3,9 +3,11 @@
 // the same parameters, and prints per strategy E_n, E_v and the seconds of
 // path construction and of filtering.
 //
-// Usage: geodesic_vs_square_pattern [clean_mesh]
+// Usage: geodesic_vs_square_pattern [clean_mesh [report.html]]
 //   The clean mesh (default: CGAL's fandisk) gets seeded Gaussian noise
 //   (sigma_E = 0.3, seed 1) and serves as the reference of E_n and E_v.
+//   With report.html, also writes the comparison page (comparison_report.h) of
+//   the noisy mesh, both results and the reference, and report.csv.
 //
 // "Paths" is the time of a call with zero iterations (reading the mesh, face
 // data, neighbourhoods and paths); "filtering" is the rest of the full call
@@ -19,6 +21,8 @@
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include "comparison_report.h"
 
 #include <chrono>
 #include <cstdio>
@@ -54,6 +58,12 @@ int main(int argc, char** argv)
               << PMP::face_normal_error(noisy, reference) << " deg, E_v " << PMP::vertex_position_error(noisy, reference)
               << "\n";
     std::cout << "parameters: k = 30, v = 2, r = 4d, sigma_s = sigma_r = 0.4, Parallel_if_available_tag\n\n";
+    denoising_report::Report report;
+    report.title = path + ", noise sigma_E 0.3 (seed 1): exact geodesic paths against the square pattern "
+                          "(k = 30, v = 2, r = 4d, sigma = 0.4)";
+    report.entries.push_back(denoising_report::make_entry("noisy", noisy, &reference));
+    report.entries.back().En = PMP::face_normal_error(noisy, reference);
+    report.entries.back().Ev = PMP::vertex_position_error(noisy, reference);
     std::printf("%-15s %10s %10s %12s %14s\n", "strategy", "E_n (deg)", "E_v", "paths (s)", "filtering (s)");
     for(const auto strategy : {PMP::Intrinsic_path_strategy::GEODESIC, PMP::Intrinsic_path_strategy::SQUARE_PATTERN})
     {
@@ -69,10 +79,28 @@ int main(int argc, char** argv)
       });
       const double t_total =
           seconds([&] { PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(denoised, np); });
+      const char* name = strategy == PMP::Intrinsic_path_strategy::GEODESIC ? "geodesic paths" : "square pattern";
+      report.entries.push_back(denoising_report::make_entry(name, denoised, &reference));
+      report.entries.back().En = PMP::face_normal_error(denoised, reference);
+      report.entries.back().Ev = PMP::vertex_position_error(denoised, reference);
+      report.entries.back().seconds = t_total;
       std::printf("%-15s %10.3f %10.3e %12.2f %14.2f\n",
                   strategy == PMP::Intrinsic_path_strategy::GEODESIC ? "geodesic" : "square pattern",
                   PMP::face_normal_error(denoised, reference), PMP::vertex_position_error(denoised, reference),
                   t_paths, t_total - t_paths);
+    }
+    if(argc > 2)
+    {
+      report.entries.push_back(denoising_report::make_entry("reference", reference, &reference));
+      report.entries.back().En = 0.;
+      report.entries.back().Ev = 0.;
+      const std::string problem = denoising_report::write_report(argv[2], report);
+      if(!problem.empty())
+      {
+        std::cerr << "error: " << problem << "\n";
+        return 1;
+      }
+      std::cout << "\nreport: " << argv[2] << "\n";
     }
   }
   catch(const std::exception& e)

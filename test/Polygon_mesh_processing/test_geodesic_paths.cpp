@@ -353,8 +353,9 @@ TEST(GeodesicPaths, ForestIsAPrefixTreeOfTheGeodesicPaths)
   EXPECT_EQ(stats.fallbacks, 0u);
   EXPECT_EQ(stats.failed_patches, 0u);
   EXPECT_TRUE(forest.step.empty()); // unit steps by default
-  // each weighted node's chain of faces is the geodesic to its face
-  D::Geodesic_patch_solver solver(f.mesh, f.faces, 1);
+  // each weighted node's chain of faces is the geodesic to its face, on the
+  // same patch (default rings) as the forest's
+  D::Geodesic_patch_solver solver(f.mesh, f.faces, D::Geodesic_path_options().patch_rings);
   D::Geodesic_path path;
   std::size_t path_nodes = 0, longer_than_direct = 0;
   for(std::uint32_t i = 0; i < f.mesh.number_of_faces(); ++i)

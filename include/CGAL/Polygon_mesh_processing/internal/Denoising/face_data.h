@@ -17,12 +17,15 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -54,15 +57,31 @@ inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 
 // A triangle mesh as arrays: vertex positions and, per face, its three vertex
 // indices in the face's orientation; plus vertex -> incident faces in CSR form.
+// The faces may be renumbered for memory locality (reorder_faces_for_locality);
+// then `input_face` gives the input index of each face, and the incident faces
+// of a vertex stay listed in the order of their input indices.
 struct Flat_mesh
 {
   std::vector<Vec3> points;                   // by vertex index
   std::vector<std::array<std::uint32_t, 3>> triangles; // by face index
   std::vector<std::uint32_t> vertex_face_offsets;      // size nv + 1
   std::vector<std::uint32_t> vertex_faces;
+  std::vector<std::uint32_t> input_face; // input index of each face; empty: the identity
 
   std::size_t number_of_vertices() const { return points.size(); }
   std::size_t number_of_faces() const { return triangles.size(); }
+  std::uint32_t input_index(std::uint32_t f) const { return input_face.empty() ? f : input_face[f]; }
+  // values by face index -> values by input face index
+  template <typename T>
+  std::vector<T> in_input_order(const std::vector<T>& values) const
+  {
+    if(input_face.empty())
+      return values;
+    std::vector<T> out(values.size());
+    for(std::size_t f = 0; f < values.size(); ++f)
+      out[input_face[f]] = values[f];
+    return out;
+  }
 };
 
 // Throws std::invalid_argument with a message naming the problem if `tmesh`
@@ -176,6 +195,75 @@ void compute_face_data(const Flat_mesh& m, const std::vector<Vec3>& points, Face
   });
 }
 
+// Key of a point on the Morton (Z-order) curve of the box [lo, lo + extent]:
+// the interleaved bits of its coordinates quantised to 21 bits each.
+inline std::uint64_t morton_key(const Vec3& p, const Vec3& lo, const Vec3& inv_extent)
+{
+  std::uint64_t key = 0;
+  std::uint64_t q[3];
+  for(int a = 0; a < 3; ++a)
+  {
+    const double t = (p[a] - lo[a]) * inv_extent[a]; // in [0, 1]
+    const double c = t > 0. ? (t < 1. ? t : 1.) : 0.;  // also maps NaN to 0
+    q[a] = std::uint64_t(c * double((1u << 21) - 1));
+  }
+  for(int bit = 20; bit >= 0; --bit)
+    for(int a = 0; a < 3; ++a)
+      key = (key << 1) | ((q[a] >> bit) & 1u);
+  return key;
+}
+
+// Renumbers the faces of `m` (and their data `fd`) along the Morton curve of
+// their centroids, so that the faces of a neighbourhood get nearby indices and
+// the filter passes read normals mostly in sequence. Nothing but the numbering
+// changes: each face keeps its vertices in order, each vertex lists its faces
+// in the same order as before (the order of their input indices), and
+// `m.input_face` records the input index of every face. Equal keys keep their
+// input order, so the result does not depend on the concurrency tag.
+template <typename ConcurrencyTag>
+void reorder_faces_for_locality(Flat_mesh& m, Face_data& fd)
+{
+  const std::size_t nf = m.number_of_faces();
+  if(nf < 2 || !m.input_face.empty())
+    return;
+  Vec3 lo = fd.centroids[0], hi = fd.centroids[0];
+  for(const Vec3& c : fd.centroids)
+    for(int a = 0; a < 3; ++a)
+    {
+      lo[a] = (std::min)(lo[a], c[a]);
+      hi[a] = (std::max)(hi[a], c[a]);
+    }
+  Vec3 inv;
+  for(int a = 0; a < 3; ++a)
+    inv[a] = hi[a] > lo[a] ? 1. / (hi[a] - lo[a]) : 0.;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(nf);
+  for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t f = b; f < e; ++f)
+      keys[f] = {morton_key(fd.centroids[f], lo, inv), std::uint32_t(f)};
+  });
+  std::sort(keys.begin(), keys.end()); // keys are distinct: the input index breaks ties
+  std::vector<std::uint32_t> new_index(nf);
+  m.input_face.resize(nf);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    m.input_face[f] = keys[f].second;
+    new_index[keys[f].second] = std::uint32_t(f);
+  }
+  std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(keys);
+  auto permute = [&](auto& values) {
+    std::remove_reference_t<decltype(values)> out(values.size());
+    for(std::size_t f = 0; f < nf; ++f)
+      out[f] = values[m.input_face[f]];
+    values.swap(out);
+  };
+  permute(m.triangles);
+  permute(fd.normals);
+  permute(fd.areas);
+  permute(fd.centroids);
+  for(std::uint32_t& f : m.vertex_faces)
+    f = new_index[f];
+}
+
 // Area-weighted unit vertex normals (sum of the incident faces' cross
 // products); zero for a vertex with no incident face of non-zero area.
 inline std::vector<Vec3> area_weighted_vertex_normals(const Flat_mesh& m)
@@ -236,7 +324,8 @@ inline double mean_adjacent_centroid_distance(const Flat_mesh& m, const Face_dat
   return count == 0 ? 0. : sum / double(count);
 }
 
-// Mean edge length (each edge once), used to scale noise.
+// Mean edge length (each edge once), used to scale noise. The faces of each
+// vertex must be listed by increasing index (a mesh not renumbered).
 inline double mean_edge_length(const Flat_mesh& m)
 {
   double sum = 0.;

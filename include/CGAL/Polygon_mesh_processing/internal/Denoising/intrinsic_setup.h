@@ -128,7 +128,8 @@ Path_forest make_paths(const NamedParameters& np, Intrinsic_path_strategy strate
   case Intrinsic_path_strategy::GEODESIC:
   {
     Geodesic_path_options go;
-    go.patch_rings = parameters::choose_parameter(parameters::get_parameter(np, internal_np::geodesic_patch_rings), 1u);
+    go.patch_rings = parameters::choose_parameter(parameters::get_parameter(np, internal_np::geodesic_patch_rings),
+                                                  go.patch_rings);
     go.step_length = use_step_length;
     go.length_unit = unit > 0. ? unit : 1.;
     return geodesic_paths<ConcurrencyTag>(*faces, *fd, neighbors, go); // with its own step lengths
@@ -187,6 +188,15 @@ Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParam
   const double d = mean_adjacent_centroid_distance(s.mesh, s.input_faces);
   s.centroid_distance = d;
   s.radius = read_radius(np, fname, d, defaults.relative_radius);
+  if(strategy == Intrinsic_path_strategy::SQUARE_PATTERN || strategy == Intrinsic_path_strategy::DIRECT)
+    reorder_faces_for_locality<ConcurrencyTag>(s.mesh, s.input_faces); // same paths; results in s.mesh.input_face order
+  if(strategy == Intrinsic_path_strategy::SQUARE_PATTERN) // each neighbourhood searched and used at once
+  {
+    s.paths = square_pattern_paths_within<ConcurrencyTag>(s.mesh, s.input_faces, s.radius);
+    if(step_length)
+      set_step_lengths(s.paths, s.input_faces.centroids, d > 0. ? d : 1.);
+    return s;
+  }
   s.neighbors = geometric_neighborhoods<ConcurrencyTag>(s.mesh, s.input_faces.centroids, s.radius);
   s.paths = make_paths<ConcurrencyTag>(np, strategy, step_length, d, s.input_faces.centroids,
                                        Face_vertex_adjacency{s.mesh}, s.neighbors, &s.mesh, &s.input_faces, fname);

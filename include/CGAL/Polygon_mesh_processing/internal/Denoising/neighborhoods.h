@@ -83,37 +83,48 @@ inline Csr vertex_adjacency(const Flat_mesh& m)
   return csr;
 }
 
-// Neighbours of every item (item i itself excluded), in breadth-first order:
-// an item enters the neighbourhood of i, and the search goes on through it, if
-// its position lies within `radius` of the position of i and it is adjacent
-// to an item already reached. For faces (positions: centroids; adjacency:
-// shared vertices) this is the geometric neighbourhood of eq. 8.
+// Scratch state of a neighbourhood search over n items.
+struct Neighborhood_search
+{
+  std::vector<std::uint32_t> stamp, queue;
+  explicit Neighborhood_search(std::size_t n = 0) : stamp(n, std::uint32_t(-1)) {}
+
+  // Neighbours of item i (item i itself excluded), in breadth-first order: an
+  // item enters the neighbourhood of i, and the search goes on through it, if
+  // its position lies within sqrt(r2) of the position of i and it is
+  // adjacent to an item already reached. Afterwards queue = {i, neighbours}.
+  template <typename Adjacency>
+  void run(std::size_t i, const std::vector<Vec3>& positions, const Adjacency& adjacent, double r2)
+  {
+    const Vec3& pi = positions[i];
+    const std::uint32_t mark = std::uint32_t(i);
+    queue.clear();
+    queue.push_back(mark);
+    stamp[i] = mark;
+    for(std::size_t q = 0; q < queue.size(); ++q)
+      adjacent(queue[q], [&](std::uint32_t g) {
+        if(stamp[g] == mark)
+          return;
+        stamp[g] = mark;
+        if(squared_norm(positions[g] - pi) <= r2)
+          queue.push_back(g);
+      });
+  }
+};
+
+// Neighbours of every item, as Neighborhood_search::run finds them. For
+// faces (positions: centroids; adjacency: shared vertices) this is the
+// geometric neighbourhood of eq. 8.
 template <typename ConcurrencyTag, typename Adjacency>
 Csr geometric_neighborhoods(const std::vector<Vec3>& positions, const Adjacency& adjacent, double radius)
 {
   const std::size_t n = positions.size();
   const double r2 = radius * radius;
-  struct Scratch
-  {
-    std::vector<std::uint32_t> stamp, queue;
-  };
   Csr csr;
   build_lists<ConcurrencyTag>(
-      n, csr.offsets, csr.items, [n] { return Scratch{std::vector<std::uint32_t>(n, std::uint32_t(-1)), {}}; },
-      [&](std::size_t i, Scratch& s, std::vector<std::uint32_t>& out) {
-        const Vec3& pi = positions[i];
-        const std::uint32_t mark = std::uint32_t(i);
-        s.queue.clear();
-        s.queue.push_back(mark);
-        s.stamp[i] = mark;
-        for(std::size_t q = 0; q < s.queue.size(); ++q)
-          adjacent(s.queue[q], [&](std::uint32_t g) {
-            if(s.stamp[g] == mark)
-              return;
-            s.stamp[g] = mark;
-            if(squared_norm(positions[g] - pi) <= r2)
-              s.queue.push_back(g);
-          });
+      n, csr.offsets, csr.items, [n] { return Neighborhood_search(n); },
+      [&](std::size_t i, Neighborhood_search& s, std::vector<std::uint32_t>& out) {
+        s.run(i, positions, adjacent, r2);
         out.insert(out.end(), s.queue.begin() + 1, s.queue.end());
       });
   return csr;

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -66,55 +67,96 @@ inline bool projected_areal_coordinates(const Vec3& a, const Vec3& b, const Vec3
   return true;
 }
 
+// (distance, input index, face): ties in distance are broken by the input
+// index, so renumbered faces (Flat_mesh::input_face) get the same trees
+typedef std::array<std::vector<std::tuple<double, std::uint32_t, std::uint32_t>>, 6> Square_pattern_regions;
+
+// Appends to `out` the square-pattern tree of face i over its neighbours
+// [nb, nb_end) (parents local to the tree). Neighbours whose projected
+// centroid falls inside face i are dropped (NOTES 6). For a degenerate face i
+// (zero normal) the regions are undefined: all its neighbours hang directly
+// from i.
+inline void square_pattern_tree(const Flat_mesh& m, const Face_data& fd, std::size_t i, const std::uint32_t* nb,
+                                const std::uint32_t* nb_end, Square_pattern_regions& regions,
+                                std::vector<Path_node>& out)
+{
+  for(auto& r : regions)
+    r.clear();
+  const std::size_t item_begin = out.size(); // parents are local to the item's nodes
+  const auto& t = m.triangles[i];
+  const Vec3& ci = fd.centroids[i];
+  const Vec3& ni = fd.normals[i];
+  const bool degenerate = squared_norm(ni) == 0.;
+  for(; nb != nb_end; ++nb)
+  {
+    const std::uint32_t j = *nb;
+    const double dist = squared_norm(fd.centroids[j] - ci);
+    std::array<double, 3> l;
+    if(degenerate ||
+       !projected_areal_coordinates(m.points[t[0]], m.points[t[1]], m.points[t[2]], ni, fd.centroids[j], l))
+    {
+      regions[0].emplace_back(dist, m.input_index(j), j);
+      continue;
+    }
+    const int r = areal_region(l[0], l[1], l[2]);
+    if(r >= 0)
+      regions[r].emplace_back(dist, m.input_index(j), j);
+  }
+  for(auto& r : regions)
+  {
+    std::sort(r.begin(), r.end()); // by distance, ties by input face index
+    const std::int32_t start = std::int32_t(out.size() - item_begin);
+    for(std::size_t k = 1; k <= r.size(); ++k)
+    {
+      std::int32_t parent = Path_forest::root;
+      if(!degenerate)
+      {
+        const std::uint32_t pk = square_pattern_parent_rank(std::uint32_t(k));
+        parent = pk == 0 ? Path_forest::root : start + std::int32_t(pk) - 1;
+      }
+      out.push_back(Path_node{std::get<2>(r[k - 1]), parent});
+    }
+  }
+}
+
 // Builds the square-pattern forest on the mesh as it is (the paper computes
-// it once, on the input mesh). Neighbours whose projected centroid falls inside
-// face i are dropped (NOTES 6). For a degenerate face i (zero normal) the
-// regions are undefined: all its neighbours hang directly from i.
+// it once, on the input mesh), from the neighbourhoods `neighbors`.
 template <typename ConcurrencyTag = CGAL::Sequential_tag>
 Path_forest square_pattern_paths(const Flat_mesh& m, const Face_data& fd, const Csr& neighbors)
 {
-  typedef std::array<std::vector<std::pair<double, std::uint32_t>>, 6> Regions;
   Path_forest forest;
   build_lists<ConcurrencyTag, Path_node>(
-      m.number_of_faces(), forest.offsets, [] { return Regions(); },
-      [&](std::size_t i, Regions& regions, std::vector<Path_node>& out) {
-        for(auto& r : regions)
-          r.clear();
-        const std::size_t item_begin = out.size(); // parents are local to the item's nodes
-        const auto& t = m.triangles[i];
-        const Vec3& ci = fd.centroids[i];
-        const Vec3& ni = fd.normals[i];
-        const bool degenerate = squared_norm(ni) == 0.;
-        for(std::uint32_t k = neighbors.begin(i); k < neighbors.end(i); ++k)
-        {
-          const std::uint32_t j = neighbors.items[k];
-          const double dist = squared_norm(fd.centroids[j] - ci);
-          std::array<double, 3> l;
-          if(degenerate || !projected_areal_coordinates(m.points[t[0]], m.points[t[1]], m.points[t[2]], ni,
-                                                        fd.centroids[j], l))
-          {
-            regions[0].emplace_back(dist, j);
-            continue;
-          }
-          const int r = areal_region(l[0], l[1], l[2]);
-          if(r >= 0)
-            regions[r].emplace_back(dist, j);
-        }
-        for(auto& r : regions)
-        {
-          std::sort(r.begin(), r.end()); // by distance, ties by face index
-          const std::int32_t start = std::int32_t(out.size() - item_begin);
-          for(std::size_t k = 1; k <= r.size(); ++k)
-          {
-            std::int32_t parent = Path_forest::root;
-            if(!degenerate)
-            {
-              const std::uint32_t pk = square_pattern_parent_rank(std::uint32_t(k));
-              parent = pk == 0 ? Path_forest::root : start + std::int32_t(pk) - 1;
-            }
-            out.push_back(Path_node{r[k - 1].second, parent});
-          }
-        }
+      m.number_of_faces(), forest.offsets, [] { return Square_pattern_regions(); },
+      [&](std::size_t i, Square_pattern_regions& regions, std::vector<Path_node>& out) {
+        square_pattern_tree(m, fd, i, neighbors.items.data() + neighbors.begin(i),
+                            neighbors.items.data() + neighbors.end(i), regions, out);
+      },
+      [&forest](const std::vector<Path_node>& chunk) { forest.append_nodes(chunk); });
+  return forest;
+}
+
+// The same forest for the geometric neighbourhoods of radius `radius`
+// (geometric_neighborhoods()), each face's neighbourhood searched and turned
+// into its tree at once, so that the neighbourhoods of all faces are never
+// held in memory together.
+template <typename ConcurrencyTag = CGAL::Sequential_tag>
+Path_forest square_pattern_paths_within(const Flat_mesh& m, const Face_data& fd, double radius)
+{
+  struct Scratch
+  {
+    Neighborhood_search search;
+    Square_pattern_regions regions;
+  };
+  const std::size_t n = m.number_of_faces();
+  const double r2 = radius * radius;
+  const Face_vertex_adjacency adjacent{m};
+  Path_forest forest;
+  build_lists<ConcurrencyTag, Path_node>(
+      n, forest.offsets, [n] { return Scratch{Neighborhood_search(n), {}}; },
+      [&](std::size_t i, Scratch& s, std::vector<Path_node>& out) {
+        s.search.run(i, fd.centroids, adjacent, r2);
+        square_pattern_tree(m, fd, i, s.search.queue.data() + 1, s.search.queue.data() + s.search.queue.size(),
+                            s.regions, out);
       },
       [&forest](const std::vector<Path_node>& chunk) { forest.append_nodes(chunk); });
   return forest;

@@ -50,7 +50,9 @@ struct Fold_safeguard
 };
 
 // Whether moving the corners of triangle t from `before` to `after` folds it
-// (rules (a) and (b) above).
+// (rules (a) to (c) above). Every test is evaluated and combined without
+// branches (they mispredict often on noisy meshes); the degeneracy test
+// compares squares, so no root is taken.
 inline bool folds(const std::array<std::uint32_t, 3>& t, const std::vector<Vec3>& before,
                   const std::vector<Vec3>& after, const Vec3& target, const Vec3& reference)
 {
@@ -59,14 +61,12 @@ inline bool folds(const std::array<std::uint32_t, 3>& t, const std::vector<Vec3>
   const Vec3 n0 = cross(e0, f0);
   const Vec3 &a1 = after[t[0]], &b1 = after[t[1]], &c1 = after[t[2]];
   const Vec3 n1 = cross(b1 - a1, c1 - a1);
-  if(dot(n0, reference) > 0. && !(dot(n1, reference) > 0.))
-    return true; // (c)
-  const double scale = squared_norm(e0) + squared_norm(f0) + squared_norm(c0 - b0);
-  if(!(norm(n0) > degenerate_face_tolerance * scale))
-    return false; // degenerate before the step: no orientation to keep
-  if(!(dot(n1, n0) > 0.))
-    return true; // (a)
-  return dot(n0, target) > 0. && !(dot(n1, target) > 0.); // (b)
+  const bool turned_from_reference = (dot(n0, reference) > 0.) & !(dot(n1, reference) > 0.); // (c)
+  const double scale = degenerate_face_tolerance * (squared_norm(e0) + squared_norm(f0) + squared_norm(c0 - b0));
+  const bool oriented = squared_norm(n0) > scale * scale; // not degenerate before the step
+  const bool turned = !(dot(n1, n0) > 0.);                                        // (a)
+  const bool turned_from_target = (dot(n0, target) > 0.) & !(dot(n1, target) > 0.); // (b)
+  return turned_from_reference | (oriented & (turned | turned_from_target));
 }
 
 // Restricts the moves `points` -> `next` of one step as described above;
