@@ -214,22 +214,67 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
   The mesh is read once and written once, at the end: if an exception is
   thrown, `tmesh` and the property maps are left unchanged.
 
-  Default parameters: `number_of_iterations` 30, `vertex_iterations` 2,
-  `relative_neighbor_radius` 4 (the values of the paper's figure 2);
-  \f$\sigma_s = \sigma_r = 0.4\f$, chosen by measurement on noisy fandisk (see
-  the package's benchmark). The paper tunes \f$\sigma\f$ per mesh in
-  [0.1, 0.8]: organic, finely detailed meshes want larger \f$\sigma\f$ and
-  fewer iterations.
+  <b>Automatic mode (the default).</b> The noise level is estimated from the
+  mesh alone (at each vertex a quadric height field is fitted by least
+  squares to the vertex and its two rings, in the frame of the vertex normal;
+  the residual's standard deviation, at the lower quartile over the vertices
+  and divided by 0.85, relative to the mean edge length: a quadric absorbs
+  smooth curvature and the low quantile ignores the vertices near sharp
+  edges). Every parameter not given is then derived from it:
+  \f$\sigma_s = \sigma_r = 0.2 + \hat\sigma\f$ (clamped to [0.2, 1.4]),
+  \f$r = 4d\f$, \f$v_{iter} = 2\f$, at most 100 iterations; and a
+  stopping rule that needs no ground truth ends the iterations once the RMS
+  vertex displacement from the input reaches 0.95 times the noise level, or
+  once the filtered normals change by less than 0.005 degree on average from
+  one iteration to the next (neither test before 10 iterations, unless the
+  noise level is below 0.02: a noise-free mesh stops after one iteration).
+  The values used are returned. Explicit parameters always win; a given
+  `number_of_iterations` is run exactly (the stopping rule is then off
+  unless `stop_when_converged(true)`). These constants were fitted on the
+  package's benchmark (`auto_parameters_benchmark`, 13 noisy inputs); see the
+  user manual for how close to a per-mesh grid search they come.
+
+  <b>Fixed mode</b> (`automatic_parameters(false)`): the values of the
+  paper's figure 2, `number_of_iterations` 30, `vertex_iterations` 2,
+  `relative_neighbor_radius` 4, and \f$\sigma_s = \sigma_r = 0.4\f$ (chosen
+  by measurement on noisy fandisk), with no stopping rule.
+
+  \return what was done: the parameter values used, the noise level, the
+  iterations run and why they stopped (`Intrinsic_denoising_report`).
 
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
           `CGAL::Parallel_if_available_tag`; the result does not depend on it.
   \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`
 
   \cgalNamedParamsBegin
+    \cgalParamNBegin{automatic_parameters}
+      \cgalParamDescription{if `true`, the parameters not given are derived from the estimated noise level and the
+                            stopping rule is on (see above); if `false`, the fixed defaults of the paper's figure 2}
+      \cgalParamType{bool}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
+    \cgalParamNBegin{noise_level}
+      \cgalParamDescription{the noise level to use instead of its estimate: the standard deviation of the noise along
+                            the normals, relative to the mean edge length (0: no noise)}
+      \cgalParamType{double, non-negative}
+      \cgalParamDefault{estimated from the mesh}
+    \cgalParamNEnd
     \cgalParamNBegin{number_of_iterations}
-      \cgalParamDescription{\f$k_{iter}\f$, the number of normal filtering passes}
+      \cgalParamDescription{\f$k_{iter}\f$, the number of normal filtering passes; with the stopping rule, the
+                            largest number}
       \cgalParamType{unsigned int}
-      \cgalParamDefault{`30`}
+      \cgalParamDefault{automatic mode: at most `100`, ended by the stopping rule; fixed mode: `30`}
+    \cgalParamNEnd
+    \cgalParamNBegin{stop_when_converged}
+      \cgalParamDescription{whether the stopping rule may end the iterations before `number_of_iterations`}
+      \cgalParamType{bool}
+      \cgalParamDefault{`true` in the automatic mode unless `number_of_iterations` is given, `false` otherwise}
+    \cgalParamNEnd
+    \cgalParamNBegin{progress_callback}
+      \cgalParamDescription{called after each iteration with the number of iterations done and the largest number
+                            (the stopping rule may end the run earlier)}
+      \cgalParamType{a callable with signature `void(std::size_t, std::size_t)`}
+      \cgalParamDefault{none}
     \cgalParamNEnd
     \cgalParamNBegin{vertex_iterations}
       \cgalParamDescription{\f$v_{iter}\f$, the vertex update steps after each pass}
@@ -237,7 +282,8 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
       \cgalParamDefault{`2`}
     \cgalParamNEnd
     \cgalParamNBegin{sigma_spatial, sigma_range, spatial_exponent, range_exponent, neighbor_radius, relative_neighbor_radius, path_strategy, use_step_length, geodesic_patch_rings, include_self_weight}
-      \cgalParamDescription{as for `intrinsic_filter_face_normals()`}
+      \cgalParamDescription{as for `intrinsic_filter_face_normals()`, except that in the automatic mode the defaults
+                            of \f$\sigma_s\f$, \f$\sigma_r\f$ and the radius are derived from the noise level}
     \cgalParamNEnd
     \cgalParamNBegin{face_normal_map}
       \cgalParamDescription{if given, receives the filtered normals of the last pass}
