@@ -28,13 +28,14 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstdio>
 #include <iostream>
-#include <mutex>
-#include <sstream>
+#include <memory>
 #include <string>
-#include <thread>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 #include <unistd.h>
 
@@ -62,8 +63,12 @@ struct Settings
 {
   std::string input, output, reference, noisy_output;
   // signed, so that a negative value is caught (Boost would wrap it into an unsigned)
+  // k, sigmas, radii and the noise level are forwarded only when given: the
+  // automatic mode of intrinsic_denoising() chooses the others
   long long iterations = 30, vertex_iterations = 2, patch_rings = 0, seed = 1;
-  double sigma_spatial = 0.4, sigma_range = 0.4, radius = 0., relative_radius = 4.;
+  double sigma_spatial = 0.4, sigma_range = 0.4, radius = 0., relative_radius = 4., noise_level = 0.;
+  bool fixed = false, progress = false;
+  std::string stop_when_converged;
   double spatial_exponent = 1., range_exponent = 1.;
   std::string paths = "square", threads = "all";
   bool step_length = false, self_weight = false, no_fold_guard = false, quiet = false;
@@ -86,6 +91,15 @@ DESCRIPTION
     along a path from each face to its neighbour (eqs. 8-9), the vertices then
     follow the filtered normals (eq. 10), and the two steps are repeated.
     Sharp edges and corners are kept; noise is removed.
+
+    By default the parameters are automatic: the noise level of INPUT is
+    estimated (or given with --noise-level), sigma_s, sigma_r and r are
+    derived from it, and the iterations stop when the vertices have moved by
+    about the noise level or the filtered normals no longer change. Only the
+    options given on the command line replace the automatic choices; --fixed
+    uses the paper's fixed parameters instead (k = 30, v = 2, r = 4d,
+    sigma = 0.4, no stopping rule). After the run, the parameters used, the
+    noise level and why the iterations stopped are printed.
 
     Neighbourhoods and paths are computed once, on the input. Paths follow the
     paper's square pattern (section 4) by default; --paths chooses the exact
@@ -114,9 +128,10 @@ DESCRIPTION
     The result is written as OUTPUT (format from its extension; default
     INPUT_denoised.off next to INPUT) through a temporary file and a rename,
     never over INPUT. Results go to standard output; errors are one line on
-    standard error. While the filter runs longer than a second on a terminal,
-    the elapsed time is shown on standard error (the library reports no
-    per-iteration progress, so this is a clock, not a percentage).
+    standard error. While the intrinsic filter runs, a progress bar
+    ([#####.....] 12/100 iterations 0.8 s) is redrawn on standard error after
+    each iteration if it is a terminal (or with --progress); the limit shown is
+    the iteration limit, the stopping rule may end the run earlier.
 
 )";
 
@@ -129,8 +144,11 @@ EXIT STATUS
     2   bad usage: unknown option, missing or malformed value, value out of range
 
 EXAMPLES
-    Denoise a scan with the defaults (k = 30, v = 2, r = 4d, sigma = 0.4):
+    Denoise a scan with the automatic parameters:
         denoise scan.off -o scan_clean.off
+
+    The paper's fixed parameters (k = 30, v = 2, r = 4d, sigma = 0.4):
+        denoise scan.off --fixed -o scan_clean.off
 
     The paper's fandisk experiment: noise sigma_E = 0.3 (seed 1), then E_n/E_v:
         denoise fandisk.off --noise 0.3 --reference fandisk.off -o out.off
@@ -156,19 +174,31 @@ po::options_description make_options(Settings &s)
     ("help,h", "print this manual and exit")
     ("output,o", po::value(&s.output)->value_name("FILE"),
        "output mesh (.off, .obj, .ply or .stl); default: INPUT_denoised.off next to INPUT")
-    ("iterations,k", po::value(&s.iterations)->value_name("K")->default_value(s.iterations),
-       "k_iter: normal filtering passes (0: no change)")
+    ("fixed", po::bool_switch(&s.fixed),
+       "the paper's fixed parameters (k = 30, v = 2, r = 4d, sigma = 0.4) instead of the automatic mode, which "
+       "estimates the noise level, derives sigma_s, sigma_r and r from it and stops when the displacement reaches "
+       "the noise level or the normals converge")
+    ("noise-level", po::value(&s.noise_level)->value_name("X"),
+       "noise level (standard deviation relative to the mean edge length) used by the automatic mode and the "
+       "stopping rule instead of the estimate")
+    ("stop-when-converged", po::value(&s.stop_when_converged)->value_name("yes|no"),
+       "stopping rule on or off (default: on in the automatic mode without --iterations, off otherwise)")
+    ("iterations,k", po::value(&s.iterations)->value_name("K"),
+       "k_iter: normal filtering passes (0: no change); default: automatic (at most the library's limit, with "
+       "the stopping rule), 30 with --fixed")
     ("vertex-iterations,v", po::value(&s.vertex_iterations)->value_name("V")->default_value(s.vertex_iterations),
        "v_iter: vertex update steps (eq. 10) after each pass")
-    ("sigma-spatial", po::value(&s.sigma_spatial)->value_name("S")->default_value(s.sigma_spatial, "0.4"),
-       "sigma_s: width of the kernel on d^s, the sum of normal changes along the path; the paper uses 0.1 to 0.8")
-    ("sigma-range", po::value(&s.sigma_range)->value_name("S")->default_value(s.sigma_range, "0.4"),
-       "sigma_r: width of the kernel on d^r, the sum of normal differences to n_i along the path")
+    ("sigma-spatial", po::value(&s.sigma_spatial)->value_name("S"),
+       "sigma_s: width of the kernel on d^s, the sum of normal changes along the path; the paper uses 0.1 to 0.8; "
+       "default: from the noise level, 0.4 with --fixed")
+    ("sigma-range", po::value(&s.sigma_range)->value_name("S"),
+       "sigma_r: width of the kernel on d^r, the sum of normal differences to n_i along the path; default: from "
+       "the noise level, 0.4 with --fixed")
     ("radius,r", po::value(&s.radius)->value_name("R"),
        "neighbourhood radius in the mesh's length unit (overrides --relative-radius)")
-    ("relative-radius", po::value(&s.relative_radius)->value_name("R")->default_value(s.relative_radius, "4"),
+    ("relative-radius", po::value(&s.relative_radius)->value_name("R"),
        "neighbourhood radius as a multiple of d, the mean distance between centroids of edge-adjacent faces (the "
-       "paper uses 2 to 6)")
+       "paper uses 2 to 6); default: automatic, 4 with --fixed")
     ("spatial-exponent", po::value(&s.spatial_exponent)->value_name("N")->default_value(s.spatial_exponent, "1"),
        "exponent n of d^s (eq. 9; 1 is the L1 form of the paper)")
     ("range-exponent", po::value(&s.range_exponent)->value_name("M")->default_value(s.range_exponent, "1"),
@@ -192,7 +222,9 @@ po::options_description make_options(Settings &s)
     ("noisy-output", po::value(&s.noisy_output)->value_name("FILE"), "with --noise: also write the noisy mesh")
     ("reference", po::value(&s.reference)->value_name("FILE"),
        "noise-free mesh with the same faces: print E_n and E_v of the input and of the result")
-    ("quiet,q", po::bool_switch(&s.quiet), "print only E_n/E_v (with --reference) and errors");
+    ("progress", po::bool_switch(&s.progress),
+       "draw the progress bar on standard error even when it is not a terminal")
+    ("quiet,q", po::bool_switch(&s.quiet), "print only E_n/E_v (with --reference) and errors; no progress bar");
   // clang-format on
   return general;
 }
@@ -229,48 +261,37 @@ std::string write_mesh(const std::string &path, const Mesh &mesh, const std::str
   return std::string();
 }
 
-// Shows the elapsed time on stderr, once a second after the first second,
-// while the object lives, if stderr is a terminal. The library gives no
-// per-iteration callback, so this is a clock, not a percentage.
-class Elapsed_clock
+// A progress bar on stderr, redrawn in place with '\r' after each iteration:
+// `[#####.....] 12/100 iterations 0.8 s`. Drawn only if `enabled` (stderr is
+// a terminal, or --progress); finish() ends the line.
+class Progress_bar
 {
 public:
-  Elapsed_clock(const std::string &what, bool enabled) : what_(what)
+  explicit Progress_bar(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+  void operator()(std::size_t done, std::size_t total)
   {
-    if(enabled && ::isatty(STDERR_FILENO))
-      thread_ = std::thread([this] { run(); });
+    if(!enabled_ || total == 0)
+      return;
+    const int width = 30;
+    const int filled = int(double(width) * double(std::min(done, total)) / double(total));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    std::string bar(std::size_t(filled), '#');
+    bar.append(std::size_t(width - filled), '.');
+    std::fprintf(stderr, "\r[%s] %zu/%zu iterations %.1f s", bar.c_str(), done, total, seconds);
+    std::fflush(stderr);
+    drawn_ = true;
   }
-  ~Elapsed_clock()
+  void finish()
   {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      done_ = true;
-    }
-    cv_.notify_all();
-    if(thread_.joinable())
-      thread_.join();
+    if(drawn_)
+      std::fprintf(stderr, "\n");
+    drawn_ = false;
   }
 
 private:
-  void run()
-  {
-    const auto start = std::chrono::steady_clock::now();
-    std::unique_lock<std::mutex> lock(mutex_);
-    bool shown = false;
-    for(int s = 1; !cv_.wait_until(lock, start + std::chrono::seconds(s), [this] { return done_; }); ++s)
-    {
-      std::fprintf(stderr, "\rdenoise: %s... %d s", what_.c_str(), s);
-      std::fflush(stderr);
-      shown = true;
-    }
-    if(shown)
-      std::fprintf(stderr, "\r\033[K");
-  }
-  std::string what_;
-  std::mutex mutex_;
-  std::condition_variable cv_;
-  bool done_ = false;
-  std::thread thread_;
+  bool enabled_;
+  bool drawn_ = false;
+  std::chrono::steady_clock::time_point start_;
 };
 
 // --method and --report (kept apart from the intrinsic filter's Settings)
@@ -304,7 +325,8 @@ std::string check_method_options(const Method_settings &m, const po::variables_m
   if(m.method != "intrinsic")
     for(const char *name : {"iterations", "vertex-iterations", "sigma-spatial", "sigma-range", "radius",
                             "relative-radius", "spatial-exponent", "range-exponent", "paths", "geodesic-rings",
-                            "step-length", "self-weight", "no-fold-guard"})
+                            "step-length", "self-weight", "no-fold-guard", "fixed", "noise-level",
+                            "stop-when-converged"})
       if(vm.count(name) && !vm[name].defaulted())
         return std::string("--") + name + " applies to --method intrinsic only";
   if(vm.count("report") && denoise_file::extension(m.report) != "html")
@@ -369,12 +391,66 @@ std::string write_cli_report(const Method_settings &m, const std::string &input_
   return R::write_report(m.report, report);
 }
 
-template <typename ConcurrencyTag, typename NamedParameters>
-std::string run_denoising(Mesh &mesh, const Settings &s, const NamedParameters &np)
+// One run of intrinsic_denoising(): the named parameters are chained stage by
+// stage, each optional one only when it was given on the command line, so
+// that the automatic mode chooses the others.
+struct Intrinsic_run
 {
-  if(s.radius > 0.)
-    return denoise_file::denoise<ConcurrencyTag>(mesh, np.neighbor_radius(s.radius));
-  return denoise_file::denoise<ConcurrencyTag>(mesh, np.relative_neighbor_radius(s.relative_radius));
+  Mesh &mesh;
+  const Settings &s;
+  const po::variables_map &vm;
+  PMP::Intrinsic_denoising_report report;
+  std::string problem;
+};
+
+template <int stage, typename NamedParameters>
+void run_intrinsic(Intrinsic_run &run, const NamedParameters &np)
+{
+  const Settings &s = run.s;
+  auto given = [&](const char *name) { return run.vm.count(name) > 0; };
+  if constexpr(stage == 0)
+  {
+    if(given("iterations"))
+      run_intrinsic<1>(run, np.number_of_iterations(static_cast<unsigned int>(s.iterations)));
+    else
+      run_intrinsic<1>(run, np);
+  }
+  else if constexpr(stage == 1)
+  {
+    if(given("sigma-spatial"))
+      run_intrinsic<2>(run, np.sigma_spatial(s.sigma_spatial));
+    else
+      run_intrinsic<2>(run, np);
+  }
+  else if constexpr(stage == 2)
+  {
+    if(given("sigma-range"))
+      run_intrinsic<3>(run, np.sigma_range(s.sigma_range));
+    else
+      run_intrinsic<3>(run, np);
+  }
+  else if constexpr(stage == 3)
+  {
+    if(given("radius"))
+      run_intrinsic<4>(run, np.neighbor_radius(s.radius));
+    else if(given("relative-radius"))
+      run_intrinsic<4>(run, np.relative_neighbor_radius(s.relative_radius));
+    else
+      run_intrinsic<4>(run, np);
+  }
+  else if constexpr(stage == 4)
+  {
+    if(given("noise-level"))
+      run_intrinsic<5>(run, np.noise_level(s.noise_level));
+    else
+      run_intrinsic<5>(run, np);
+  }
+  else
+  {
+    // One concurrency tag only (the stages above multiply the instantiations);
+    // --threads 1 limits TBB to one thread instead (see main()).
+    run.problem = denoise_file::denoise<CGAL::Parallel_if_available_tag>(run.mesh, np, &run.report);
+  }
 }
 
 bool positive_finite(double x)
@@ -430,6 +506,10 @@ int main(int argc, char **argv)
     return fail(exit_usage, "sigmas, exponents and radii must be positive and finite");
   if(vm.count("radius") && !positive_finite(s.radius))
     return fail(exit_usage, "--radius must be positive and finite");
+  if(vm.count("noise-level") && !(std::isfinite(s.noise_level) && s.noise_level >= 0.))
+    return fail(exit_usage, "--noise-level must be non-negative and finite");
+  if(vm.count("stop-when-converged") && s.stop_when_converged != "yes" && s.stop_when_converged != "no")
+    return fail(exit_usage, "--stop-when-converged must be yes or no, not '" + s.stop_when_converged + "'");
   if(vm.count("noise") && !(std::isfinite(s.noise) && s.noise >= 0.))
     return fail(exit_usage, "--noise must be non-negative and finite");
   if(vm.count("impulsive") && !(s.impulsive >= 0. && s.impulsive <= 1.))
@@ -511,27 +591,41 @@ int main(int argc, char **argv)
                                                 : s.paths == "direct" ? PMP::Intrinsic_path_strategy::DIRECT
                                                 : s.paths == "graph" ? PMP::Intrinsic_path_strategy::SHORTEST_GRAPH_PATH
                                                                      : PMP::Intrinsic_path_strategy::GEODESIC;
-  const auto np = CGAL::parameters::number_of_iterations(static_cast<unsigned int>(s.iterations))
-                      .vertex_iterations(static_cast<unsigned int>(s.vertex_iterations))
-                      .sigma_spatial(s.sigma_spatial)
-                      .sigma_range(s.sigma_range)
+  // Always forwarded: the options whose defaults the automatic mode does not
+  // touch (their command-line defaults are the library's), the mode itself,
+  // the stopping rule (when not given: the library's default, on in the
+  // automatic mode unless the iterations are given) and the progress bar.
+  Progress_bar bar(talk && (s.progress || ::isatty(STDERR_FILENO)));
+  auto progress = [&bar](std::size_t done, std::size_t total) { bar(done, total); };
+  const bool stop = vm.count("stop-when-converged") ? s.stop_when_converged == "yes"
+                                                    : !s.fixed && !vm.count("iterations");
+  const auto np = CGAL::parameters::vertex_iterations(static_cast<unsigned int>(s.vertex_iterations))
                       .spatial_exponent(s.spatial_exponent)
                       .range_exponent(s.range_exponent)
                       .path_strategy(strategy)
                       .use_step_length(s.step_length)
                       .geodesic_patch_rings(static_cast<unsigned int>(s.patch_rings))
                       .include_self_weight(s.self_weight)
-                      .prevent_folds(!s.no_fold_guard);
+                      .prevent_folds(!s.no_fold_guard)
+                      .automatic_parameters(!s.fixed)
+                      .stop_when_converged(stop)
+                      .progress_callback(progress);
   Mesh denoised = input;
+  Intrinsic_run run{denoised, s, vm, PMP::Intrinsic_denoising_report(), std::string()};
   const auto start = std::chrono::steady_clock::now();
+  if(method.method != "intrinsic")
+    problem = s.threads == "1" ? run_classic<CGAL::Sequential_tag>(denoised, method.method)
+                               : run_classic<CGAL::Parallel_if_available_tag>(denoised, method.method);
+  else
   {
-    Elapsed_clock clock("denoising " + std::to_string(num_faces(input)) + " faces", talk);
-    if(method.method != "intrinsic")
-      problem = s.threads == "1" ? run_classic<CGAL::Sequential_tag>(denoised, method.method)
-                                 : run_classic<CGAL::Parallel_if_available_tag>(denoised, method.method);
-    else
-      problem = s.threads == "1" ? run_denoising<CGAL::Sequential_tag>(denoised, s, np)
-                                 : run_denoising<CGAL::Parallel_if_available_tag>(denoised, s, np);
+#ifdef CGAL_LINKED_WITH_TBB
+    std::unique_ptr<tbb::global_control> one_thread;
+    if(s.threads == "1")
+      one_thread = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, 1);
+#endif
+    run_intrinsic<0>(run, np);
+    bar.finish();
+    problem = run.problem;
   }
   if(!problem.empty())
     return fail(exit_input, problem);
@@ -541,16 +635,10 @@ int main(int argc, char **argv)
               << "\n";
   else if(talk)
   {
-    std::ostringstream radius;
-    if(s.radius > 0.)
-      radius << s.radius;
-    else
-      radius << s.relative_radius << "d";
-    std::cout << "denoised in " << seconds << " s: " << s.paths << " paths, k = " << s.iterations
-              << ", v = " << s.vertex_iterations << ", r = " << radius.str() << ", sigma_s = " << s.sigma_spatial
-              << ", sigma_r = " << s.sigma_range << ", n = " << s.spatial_exponent << ", m = " << s.range_exponent
-              << (s.step_length ? ", step lengths" : "") << (s.no_fold_guard ? ", no fold guard" : "") << ", threads "
-              << s.threads << "\n";
+    std::cout << "denoised in " << seconds << " s: " << s.paths << " paths, n = " << s.spatial_exponent
+              << ", m = " << s.range_exponent << (s.step_length ? ", step lengths" : "")
+              << (s.no_fold_guard ? ", no fold guard" : "") << ", threads " << s.threads << "\n";
+    std::cout << denoise_file::describe(run.report);
   }
 
   if(!s.reference.empty())

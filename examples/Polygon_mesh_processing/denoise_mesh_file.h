@@ -234,20 +234,47 @@ inline std::string read_mesh_file(const std::string& path, Mesh& mesh)
 }
 
 // Denoises `mesh` with the package's defaults (plus `np`); on failure `mesh`
-// is unchanged and a one-line message is returned.
+// is unchanged and a one-line message is returned. If `report` is not null,
+// it receives what intrinsic_denoising() chose and did.
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-std::string denoise(Mesh& mesh, const NamedParameters& np = CGAL::parameters::default_values())
+std::string denoise(Mesh& mesh, const NamedParameters& np = CGAL::parameters::default_values(),
+                    CGAL::Polygon_mesh_processing::Intrinsic_denoising_report* report = nullptr)
 {
   try
   {
-    CGAL::Polygon_mesh_processing::intrinsic_denoising<ConcurrencyTag>(mesh, np);
+    const CGAL::Polygon_mesh_processing::Intrinsic_denoising_report r =
+        CGAL::Polygon_mesh_processing::intrinsic_denoising<ConcurrencyTag>(mesh, np);
+    if(report != nullptr)
+      *report = r;
   }
   catch(const std::exception& e)
   {
     return e.what();
   }
   return std::string();
+}
+
+// A few readable lines on what intrinsic_denoising() chose and did.
+inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoising_report& r)
+{
+  using Reason = CGAL::Polygon_mesh_processing::Intrinsic_stop_reason;
+  std::ostringstream out;
+  out << "parameters: " << (r.automatic_parameters ? "automatic" : "fixed") << "\n";
+  if(r.noise_level_estimated || r.noise_level > 0. || r.automatic_parameters)
+    out << "noise level: " << r.noise_level << " x mean edge length ("
+        << (r.noise_level_estimated ? "estimated" : "given") << ")\n";
+  out << "sigma_s = " << r.sigma_spatial << ", sigma_r = " << r.sigma_range << "\n";
+  out << "r = " << r.neighbor_radius << " (" << r.relative_neighbor_radius << " d), v_iter = " << r.vertex_iterations
+      << "\n";
+  out << "iterations: " << r.iterations << " of at most " << r.maximum_iterations << ", stopped: "
+      << (r.stop_reason == Reason::NOISE_LEVEL_REACHED ? "displacement reached the noise level"
+          : r.stop_reason == Reason::CONVERGED         ? "converged"
+                                                       : "iteration limit");
+  if(r.stop_reason != Reason::ITERATION_LIMIT || r.displacement > 0.)
+    out << " (RMS displacement " << r.displacement << " x mean edge length)";
+  out << "\n";
+  return out.str();
 }
 
 // <input without its extension>_denoised.off, next to the input.

@@ -1,5 +1,8 @@
-// Denoises a mesh with the intrinsic filter (square-pattern paths) and, when a
-// noise-free reference is given, prints the errors E_n and E_v.
+// Denoises a mesh with the intrinsic filter (square-pattern paths) in its
+// default, automatic mode: the noise level is estimated, sigma_s, sigma_r and
+// r are derived from it and a stopping rule ends the iterations. Prints what
+// was chosen (the returned report) and, when a noise-free reference is given,
+// the errors E_n and E_v.
 //
 // Usage: intrinsic_denoising_example [input [reference]]
 //   Without arguments: CGAL's fandisk with seeded Gaussian noise
@@ -64,13 +67,16 @@ int main(int argc, char** argv)
 
   Mesh denoised = noisy;
   const auto start = std::chrono::steady_clock::now();
-  const std::string problem = denoise_file::denoise<CGAL::Parallel_if_available_tag>(denoised);
+  PMP::Intrinsic_denoising_report report;
+  const std::string problem =
+      denoise_file::denoise<CGAL::Parallel_if_available_tag>(denoised, CGAL::parameters::default_values(), &report);
   if(!problem.empty())
     return fail(problem);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::cout << "denoised " << num_faces(denoised) << " faces in " << seconds
-            << " s (square-pattern paths, 30 iterations, r = 4d, sigma_s = sigma_r = 0.4)\n";
+            << " s (square-pattern paths, default parameters)\n"
+            << denoise_file::describe(report);
   if(!reference_path.empty())
   {
     try

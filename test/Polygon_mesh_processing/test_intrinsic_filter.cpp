@@ -279,7 +279,7 @@ TEST(IntrinsicFilter, DenoiserOnTheEngineEqualsTheDirectFormula)
   const unsigned k = 5;
   // the fold safeguard is a separate layer of the vertex update: off here, as
   // in the plain eq. 10 of the reference loop
-  PMP::intrinsic_denoising(mesh, CGAL::parameters::number_of_iterations(k).prevent_folds(false));
+  PMP::intrinsic_denoising(mesh, CGAL::parameters::number_of_iterations(k).prevent_folds(false).automatic_parameters(false));
 
   // Algorithm 1 again with the reference pass
   const D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters> maps(reference,

@@ -8,15 +8,65 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
 
 #include <CGAL/tags.h>
 
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
+
+/// \ingroup PMP_denoising_grp
+/// Why `intrinsic_denoising()` stopped iterating.
+enum class Intrinsic_stop_reason {
+  /// it ran `maximum_iterations` iterations
+  ITERATION_LIMIT,
+  /// stopping rule: the RMS vertex displacement from the input reached the
+  /// noise level (times `Intrinsic_denoising_report::displacement_fraction`)
+  NOISE_LEVEL_REACHED,
+  /// stopping rule: the filtered normals changed by less than
+  /// `Intrinsic_denoising_report::change_tolerance` degrees on average
+  CONVERGED
+};
+
+/// \ingroup PMP_denoising_grp
+/// What `intrinsic_denoising()` did: the parameter values it used (given or
+/// chosen automatically), the noise level, and how many iterations it ran.
+struct Intrinsic_denoising_report
+{
+  /// whether the parameters not given were derived from the mesh
+  bool automatic_parameters = false;
+  /// the noise level, as a standard deviation relative to the mean edge length
+  /// (0 if neither the automatic mode nor the stopping rule needed it)
+  double noise_level = 0.;
+  /// whether `noise_level` was estimated (`false`: given by the caller)
+  bool noise_level_estimated = false;
+  /// the mean edge length of the input mesh
+  double mean_edge_length = 0.;
+  /// \f$\sigma_s\f$ and \f$\sigma_r\f$ used
+  double sigma_spatial = 0., sigma_range = 0.;
+  /// the neighbourhood radius used, absolute and relative to \f$d\f$
+  double neighbor_radius = 0., relative_neighbor_radius = 0.;
+  /// \f$v_{iter}\f$ used
+  unsigned int vertex_iterations = 0;
+  /// the iteration limit, and the iterations run
+  unsigned int maximum_iterations = 0, iterations = 0;
+  /// why the iterations stopped
+  Intrinsic_stop_reason stop_reason = Intrinsic_stop_reason::ITERATION_LIMIT;
+  /// with the stopping rule: the RMS vertex displacement from the input at the
+  /// end, relative to the mean edge length
+  double displacement = 0.;
+  /// the constants of the stopping rule
+  static constexpr double displacement_fraction = internal::Denoising::Automatic_rules::displacement_fraction;
+  static constexpr double change_tolerance = internal::Denoising::Automatic_rules::change_tolerance;
+};
 
 
 /*!
@@ -164,22 +214,67 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
   The mesh is read once and written once, at the end: if an exception is
   thrown, `tmesh` and the property maps are left unchanged.
 
-  Default parameters: `number_of_iterations` 30, `vertex_iterations` 2,
-  `relative_neighbor_radius` 4 (the values of the paper's figure 2);
-  \f$\sigma_s = \sigma_r = 0.4\f$, chosen by measurement on noisy fandisk (see
-  the package's benchmark). The paper tunes \f$\sigma\f$ per mesh in
-  [0.1, 0.8]: organic, finely detailed meshes want larger \f$\sigma\f$ and
-  fewer iterations.
+  <b>Automatic mode (the default).</b> The noise level is estimated from the
+  mesh alone (at each vertex a quadric height field is fitted by least
+  squares to the vertex and its two rings, in the frame of the vertex normal;
+  the residual's standard deviation, at the lower quartile over the vertices
+  and divided by 0.85, relative to the mean edge length: a quadric absorbs
+  smooth curvature and the low quantile ignores the vertices near sharp
+  edges). Every parameter not given is then derived from it:
+  \f$\sigma_s = \sigma_r = 0.2 + \hat\sigma\f$ (clamped to [0.2, 1.4]),
+  \f$r = 4d\f$, \f$v_{iter} = 2\f$, at most 100 iterations; and a
+  stopping rule that needs no ground truth ends the iterations once the RMS
+  vertex displacement from the input reaches 0.95 times the noise level, or
+  once the filtered normals change by less than 0.005 degree on average from
+  one iteration to the next (neither test before 10 iterations, unless the
+  noise level is below 0.02: a noise-free mesh stops after one iteration).
+  The values used are returned. Explicit parameters always win; a given
+  `number_of_iterations` is run exactly (the stopping rule is then off
+  unless `stop_when_converged(true)`). These constants were fitted on the
+  package's benchmark (`auto_parameters_benchmark`, 13 noisy inputs); see the
+  user manual for how close to a per-mesh grid search they come.
+
+  <b>Fixed mode</b> (`automatic_parameters(false)`): the values of the
+  paper's figure 2, `number_of_iterations` 30, `vertex_iterations` 2,
+  `relative_neighbor_radius` 4, and \f$\sigma_s = \sigma_r = 0.4\f$ (chosen
+  by measurement on noisy fandisk), with no stopping rule.
+
+  \return what was done: the parameter values used, the noise level, the
+  iterations run and why they stopped (`Intrinsic_denoising_report`).
 
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
           `CGAL::Parallel_if_available_tag`; the result does not depend on it.
   \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`
 
   \cgalNamedParamsBegin
+    \cgalParamNBegin{automatic_parameters}
+      \cgalParamDescription{if `true`, the parameters not given are derived from the estimated noise level and the
+                            stopping rule is on (see above); if `false`, the fixed defaults of the paper's figure 2}
+      \cgalParamType{bool}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
+    \cgalParamNBegin{noise_level}
+      \cgalParamDescription{the noise level to use instead of its estimate: the standard deviation of the noise along
+                            the normals, relative to the mean edge length (0: no noise)}
+      \cgalParamType{double, non-negative}
+      \cgalParamDefault{estimated from the mesh}
+    \cgalParamNEnd
     \cgalParamNBegin{number_of_iterations}
-      \cgalParamDescription{\f$k_{iter}\f$, the number of normal filtering passes}
+      \cgalParamDescription{\f$k_{iter}\f$, the number of normal filtering passes; with the stopping rule, the
+                            largest number}
       \cgalParamType{unsigned int}
-      \cgalParamDefault{`30`}
+      \cgalParamDefault{automatic mode: at most `100`, ended by the stopping rule; fixed mode: `30`}
+    \cgalParamNEnd
+    \cgalParamNBegin{stop_when_converged}
+      \cgalParamDescription{whether the stopping rule may end the iterations before `number_of_iterations`}
+      \cgalParamType{bool}
+      \cgalParamDefault{`true` in the automatic mode unless `number_of_iterations` is given, `false` otherwise}
+    \cgalParamNEnd
+    \cgalParamNBegin{progress_callback}
+      \cgalParamDescription{called after each iteration with the number of iterations done and the largest number
+                            (the stopping rule may end the run earlier)}
+      \cgalParamType{a callable with signature `void(std::size_t, std::size_t)`}
+      \cgalParamDefault{none}
     \cgalParamNEnd
     \cgalParamNBegin{vertex_iterations}
       \cgalParamDescription{\f$v_{iter}\f$, the vertex update steps after each pass}
@@ -187,7 +282,8 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
       \cgalParamDefault{`2`}
     \cgalParamNEnd
     \cgalParamNBegin{sigma_spatial, sigma_range, spatial_exponent, range_exponent, neighbor_radius, relative_neighbor_radius, path_strategy, use_step_length, geodesic_patch_rings, include_self_weight}
-      \cgalParamDescription{as for `intrinsic_filter_face_normals()`}
+      \cgalParamDescription{as for `intrinsic_filter_face_normals()`, except that in the automatic mode the defaults
+                            of \f$\sigma_s\f$, \f$\sigma_r\f$ and the radius are derived from the noise level}
     \cgalParamNEnd
     \cgalParamNBegin{face_normal_map}
       \cgalParamDescription{if given, receives the filtered normals of the last pass}
@@ -228,21 +324,55 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
-void intrinsic_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::default_values())
+Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
+                                               const NamedParameters& np = parameters::default_values())
 {
   namespace D = internal::Denoising;
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using parameters::is_default_parameter;
   static const char* fname = "intrinsic_denoising()";
+  Intrinsic_denoising_report report;
   if(faces(tmesh).empty())
-    return;
+    return report;
   const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
-  const unsigned int iterations =
-      choose_parameter(get_parameter(np, internal_np::number_of_iterations), D::Intrinsic_defaults::iterations);
+  constexpr bool iterations_given = !is_default_parameter<NamedParameters, internal_np::number_of_iterations_t>::value;
+  report.automatic_parameters = choose_parameter(get_parameter(np, internal_np::automatic_parameters), true);
+  const bool stop_rule = choose_parameter(get_parameter(np, internal_np::stop_when_converged),
+                                         report.automatic_parameters && !iterations_given);
+  const double given_noise = choose_parameter(get_parameter(np, internal_np::noise_level), -1.);
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::noise_level_t>::value)
+    if(!(given_noise >= 0.) || !std::isfinite(given_noise))
+      throw std::invalid_argument(std::string(fname) + ": noise_level must be finite and non-negative.");
   const unsigned int vertex_iterations = choose_parameter(get_parameter(np, internal_np::vertex_iterations),
                                                           D::Intrinsic_defaults::vertex_iterations);
-  D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname);
+
+  // The noise level is needed by the automatic parameters and by the stopping
+  // rule; it is estimated on the input mesh unless given.
+  D::Automatic_choice choice;
+  const bool need_noise = report.automatic_parameters || stop_rule;
+  auto choose_defaults = [&](const D::Flat_mesh& mesh) {
+    report.mean_edge_length = D::mean_edge_length(mesh);
+    if(need_noise)
+    {
+      report.noise_level = given_noise >= 0. ? given_noise : D::estimate_noise<ConcurrencyTag>(mesh).relative_noise;
+      report.noise_level_estimated = given_noise < 0.;
+      choice = D::automatic_choice(report.noise_level);
+    }
+    return report.automatic_parameters ? choice.kernel : D::Setup_defaults();
+  };
+  D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname, choose_defaults);
+  const unsigned int iterations = choose_parameter(
+      get_parameter(np, internal_np::number_of_iterations),
+      report.automatic_parameters ? choice.max_iterations : D::Intrinsic_defaults::iterations);
+  report.sigma_spatial = s.kernel.sigma_spatial;
+  report.sigma_range = s.kernel.sigma_range;
+  report.neighbor_radius = s.radius;
+  report.relative_neighbor_radius = s.centroid_distance > 0. ? s.radius / s.centroid_distance : 0.;
+  report.vertex_iterations = vertex_iterations;
+  report.maximum_iterations = iterations;
+  const auto progress = choose_parameter(get_parameter(np, internal_np::progress_callback), D::No_progress());
+
   const std::vector<char> fixed = maps.constrained(tmesh);
   D::Fold_safeguard guard;
   guard.enabled = choose_parameter(get_parameter(np, internal_np::prevent_folds), true);
@@ -250,18 +380,44 @@ void intrinsic_denoising(TriangleMesh& tmesh, const NamedParameters& np = parame
   guard.reference = &input_normals;
 
   std::vector<D::Vec3>& points = s.mesh.points;
+  const std::vector<D::Vec3> input_points = stop_rule ? points : std::vector<D::Vec3>();
+  const double target_displacement = D::Automatic_rules::displacement_fraction * report.noise_level;
   D::Face_data current = std::move(s.input_faces);
-  std::vector<D::Vec3> filtered, centroids, next;
+  std::vector<D::Vec3> filtered, previous, centroids, next;
+  report.stop_reason = Intrinsic_stop_reason::ITERATION_LIMIT;
   for(unsigned int it = 0; it < iterations; ++it)
   {
     if(it > 0)
       D::compute_face_data<ConcurrencyTag>(s.mesh, points, current);
     D::intrinsic_filter_pass<ConcurrencyTag>(s.paths, current.normals, current.areas, s.kernel, filtered);
     D::update_vertices<ConcurrencyTag>(s.mesh, points, filtered, fixed, vertex_iterations, centroids, next, &guard);
+    report.iterations = it + 1;
+    progress(std::size_t(it + 1), std::size_t(iterations));
+    if(!stop_rule || it + 1 == iterations)
+      continue;
+    // the stopping rule (not before min_iterations unless there is no noise)
+    if(it + 1 >= D::Automatic_rules::min_iterations || report.noise_level < D::Automatic_rules::min_noise)
+    {
+      report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
+      if(report.displacement >= target_displacement)
+      {
+        report.stop_reason = Intrinsic_stop_reason::NOISE_LEVEL_REACHED;
+        break;
+      }
+      if(!previous.empty() && D::mean_angle_degrees(filtered, previous) < D::Automatic_rules::change_tolerance)
+      {
+        report.stop_reason = Intrinsic_stop_reason::CONVERGED;
+        break;
+      }
+    }
+    previous.swap(filtered); // the next pass overwrites all of `filtered`
   }
+  if(stop_rule)
+    report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
   maps.write_points(tmesh, points);
   if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
     maps.write_face_vectors(tmesh, s.mesh.in_input_order(filtered), get_parameter(np, internal_np::face_normal));
+  return report;
 }
 
 } // namespace Polygon_mesh_processing

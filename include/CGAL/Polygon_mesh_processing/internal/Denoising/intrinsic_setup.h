@@ -37,14 +37,25 @@ struct Intrinsic_defaults
 };
 
 // sigma_s, sigma_r, n, m and the self term, checked.
+// The values used for the parameters the caller did not give: the fixed
+// defaults, or those the automatic mode of intrinsic_denoising() derived from
+// the mesh.
+struct Setup_defaults
+{
+  double sigma_spatial = Intrinsic_defaults::sigma_spatial;
+  double sigma_range = Intrinsic_defaults::sigma_range;
+  double relative_radius = Intrinsic_defaults::relative_radius;
+};
+
 template <typename NamedParameters>
-Intrinsic_kernel read_kernel(const NamedParameters& np, const char* fname, bool default_self = false)
+Intrinsic_kernel read_kernel(const NamedParameters& np, const char* fname, bool default_self = false,
+                             const Setup_defaults& defaults = Setup_defaults())
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
   Intrinsic_kernel k;
-  k.sigma_spatial = choose_parameter(get_parameter(np, internal_np::sigma_spatial), Intrinsic_defaults::sigma_spatial);
-  k.sigma_range = choose_parameter(get_parameter(np, internal_np::sigma_range), Intrinsic_defaults::sigma_range);
+  k.sigma_spatial = choose_parameter(get_parameter(np, internal_np::sigma_spatial), defaults.sigma_spatial);
+  k.sigma_range = choose_parameter(get_parameter(np, internal_np::sigma_range), defaults.sigma_range);
   k.spatial_exponent = choose_parameter(get_parameter(np, internal_np::spatial_exponent), 1.);
   k.range_exponent = choose_parameter(get_parameter(np, internal_np::range_exponent), 1.);
   k.include_self = choose_parameter(get_parameter(np, internal_np::include_self_weight), default_self);
@@ -59,7 +70,8 @@ Intrinsic_kernel read_kernel(const NamedParameters& np, const char* fname, bool 
 // relative_neighbor_radius times `unit` (the mean distance between adjacent
 // items' positions).
 template <typename NamedParameters>
-double read_radius(const NamedParameters& np, const char* fname, double unit)
+double read_radius(const NamedParameters& np, const char* fname, double unit,
+                   double default_relative = Intrinsic_defaults::relative_radius)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -70,7 +82,7 @@ double read_radius(const NamedParameters& np, const char* fname, double unit)
     return absolute;
   }
   const double relative =
-      choose_parameter(get_parameter(np, internal_np::relative_neighbor_radius), Intrinsic_defaults::relative_radius);
+      choose_parameter(get_parameter(np, internal_np::relative_neighbor_radius), default_relative);
   require_positive(relative, fname, "relative_neighbor_radius");
   return relative * unit;
 }
@@ -149,23 +161,33 @@ struct Intrinsic_setup
   Flat_mesh mesh;
   Face_data input_faces;
   double radius = 0.;
+  double centroid_distance = 0.; // d, the unit of relative radii and step lengths
   Csr neighbors;
   Path_forest paths;
   Intrinsic_kernel kernel;
 };
 
-template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters, typename Maps>
+struct Fixed_setup_defaults
+{
+  Setup_defaults operator()(const Flat_mesh&) const { return Setup_defaults(); }
+};
+
+// `choose_defaults(mesh)` gives the values of the parameters not in `np`.
+template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters, typename Maps,
+          typename ChooseDefaults = Fixed_setup_defaults>
 Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParameters& np, const Maps& maps,
-                                     const char* fname)
+                                     const char* fname, const ChooseDefaults& choose_defaults = ChooseDefaults())
 {
   Intrinsic_setup s;
-  s.kernel = read_kernel(np, fname);
   const Intrinsic_path_strategy strategy = read_strategy(np, Intrinsic_path_strategy::SQUARE_PATTERN);
   const bool step_length = read_step_length(np);
   s.mesh = maps.flat(tmesh, fname);
+  const Setup_defaults defaults = choose_defaults(static_cast<const Flat_mesh&>(s.mesh));
+  s.kernel = read_kernel(np, fname, false, defaults);
   compute_face_data<ConcurrencyTag>(s.mesh, s.mesh.points, s.input_faces);
   const double d = mean_adjacent_centroid_distance(s.mesh, s.input_faces);
-  s.radius = read_radius(np, fname, d);
+  s.centroid_distance = d;
+  s.radius = read_radius(np, fname, d, defaults.relative_radius);
   if(strategy == Intrinsic_path_strategy::SQUARE_PATTERN || strategy == Intrinsic_path_strategy::DIRECT)
     reorder_faces_for_locality<ConcurrencyTag>(s.mesh, s.input_faces); // same paths; results in s.mesh.input_face order
   if(strategy == Intrinsic_path_strategy::SQUARE_PATTERN) // each neighbourhood searched and used at once

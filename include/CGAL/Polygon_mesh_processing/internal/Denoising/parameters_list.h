@@ -43,3 +43,13 @@ CGAL_add_named_parameter(use_vertex_neighborhood_t, use_vertex_neighborhood, use
 CGAL_add_named_parameter(l0_weight_t, l0_weight, l0_weight)
 // He and Schaefer 2013: initial alpha = regularization_weight * (mean dihedral angle)
 CGAL_add_named_parameter(regularization_weight_t, regularization_weight, regularization_weight)
+// automatic mode of intrinsic_denoising() (issue 7)
+// whether the parameters not given are derived from the mesh (default true)
+CGAL_add_named_parameter(automatic_parameters_t, automatic_parameters, automatic_parameters)
+// the noise level in units of the mean edge length, instead of its estimate
+CGAL_add_named_parameter(noise_level_t, noise_level, noise_level)
+// whether the iterations stop by the no-ground-truth rule (default: unless
+// number_of_iterations is given or automatic_parameters is false)
+CGAL_add_named_parameter(stop_when_converged_t, stop_when_converged, stop_when_converged)
+// a callable (iterations done, maximum iterations) called after each iteration
+CGAL_add_named_parameter(progress_callback_t, progress_callback, progress_callback)

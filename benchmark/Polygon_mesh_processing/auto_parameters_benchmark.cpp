@@ -1,0 +1,323 @@
+// Automatic parameters and stopping rule of intrinsic_denoising() (issue 7),
+// measured against a grid search on a set of seeded noisy inputs.
+//
+// Usage: auto_parameters_benchmark [--grid] [--estimates] [--trace] [--only name]
+//                                  [--mesh file.off sigma kind]...
+//   default:     per input, E_n of the automatic mode (the denoiser's defaults:
+//                intrinsic_denoising(mesh)) with what it chose, and E_n of each
+//                classic method with its defaults;
+//   --grid:      also the best E_n of a grid search over (sigma, r, k) for the
+//                same method and its setting, and the ratio (slow: 35 settings
+//                of up to 150 iterations per input);
+//   --estimates: only the noise estimates (noisy and noise-free) per input;
+//   --trace:     per grid setting, E_n and the stopping signals per iteration
+//                (to stderr), for studying the rule;
+//   --only name: one input;
+//   --mesh:      instead of the built-in inputs, CGAL data set meshes
+//                (meshes/file.off) with Gaussian noise sigma (repeatable).
+//
+// The grid runs the denoiser's own loop (same setup, same pass, same vertex
+// update) and reads E_n after every iteration, so k is searched exactly.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Polygon_mesh_processing/add_noise.h>
+#include <CGAL/Polygon_mesh_processing/bilateral_mesh_denoising.h>
+#include <CGAL/Polygon_mesh_processing/bilateral_normal_denoising.h>
+#include <CGAL/Polygon_mesh_processing/denoising_error.h>
+#include <CGAL/Polygon_mesh_processing/fast_feature_preserving_denoising.h>
+#include <CGAL/Polygon_mesh_processing/guided_normal_denoising.h>
+#include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
+#include <CGAL/Polygon_mesh_processing/l0_denoising.h>
+#include <CGAL/Polygon_mesh_processing/non_iterative_denoising.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/noise_estimate.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include "../../test/Polygon_mesh_processing/synthetic_meshes.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace D = CGAL::Polygon_mesh_processing::internal::Denoising;
+typedef CGAL::Parallel_if_available_tag Tag;
+
+struct Input
+{
+  std::string name, kind, noise;
+  Mesh reference, noisy;
+};
+
+static bool load(const char* file, Mesh& m)
+{
+  return CGAL::IO::read_polygon_mesh(CGAL::data_file_path(std::string("meshes/") + file), m) && !m.is_empty() &&
+         CGAL::is_triangle_mesh(m);
+}
+
+struct Extra
+{
+  std::string file, kind;
+  double sigma;
+};
+
+static std::vector<Input> make_inputs(const std::string& only, const std::vector<Extra>& extras)
+{
+  struct Spec
+  {
+    const char* name;
+    const char* kind;
+    std::function<bool(Mesh&)> make;
+    double sigma;
+    double impulsive_fraction; // 0: Gaussian noise on every vertex
+  };
+  const std::vector<Spec> specs = {
+      {"fandisk", "CAD", [](Mesh& m) { return load("fandisk.off", m); }, 0.1, 0.},
+      {"fandisk", "CAD", [](Mesh& m) { return load("fandisk.off", m); }, 0.2, 0.},
+      {"fandisk", "CAD", [](Mesh& m) { return load("fandisk.off", m); }, 0.3, 0.},
+      {"fandisk", "CAD", [](Mesh& m) { return load("fandisk.off", m); }, 0.5, 0.2},
+      {"octahedron", "synthetic CAD", [](Mesh& m) { m = denoising_test::graded_octahedron<Mesh>(17, 1.4); return true; }, 0.3, 0.},
+      {"prism", "synthetic CAD", [](Mesh& m) { m = denoising_test::hexagonal_prism<Mesh>(12, 40, 18); return true; }, 0.1, 0.},
+      {"cube", "synthetic CAD", [](Mesh& m) { m = denoising_test::cube<Mesh>(24); return true; }, 0.2, 0.},
+      {"turbine", "CAD", [](Mesh& m) { return load("turbine.off", m); }, 0.2, 0.},
+      {"mech-holes-shark", "CAD", [](Mesh& m) { return load("mech-holes-shark.off", m); }, 0.3, 0.},
+      {"lion-head", "organic", [](Mesh& m) { return load("lion-head.off", m); }, 0.1, 0.},
+      {"bear", "organic", [](Mesh& m) { return load("bear.off", m); }, 0.2, 0.},
+      {"camel", "organic", [](Mesh& m) { return load("camel.off", m); }, 0.3, 0.},
+      {"bunny00", "organic", [](Mesh& m) { return load("bunny00.off", m); }, 0.2, 0.},
+  };
+  std::vector<Spec> all = extras.empty() ? specs : std::vector<Spec>();
+  for(const Extra& e : extras)
+  {
+    const std::string file = e.file;
+    all.push_back({nullptr, nullptr, [file](Mesh& m) { return load(file.c_str(), m); }, e.sigma, 0.});
+  }
+  std::vector<Input> inputs;
+  for(std::size_t i = 0; i < all.size(); ++i)
+  {
+    Spec s = all[i];
+    const std::size_t x = i + extras.size() - all.size(); // index into extras
+    if(s.name == nullptr)
+    {
+      s.name = extras[x].file.c_str();
+      s.kind = extras[x].kind.c_str();
+    }
+    Input in;
+    in.name = s.name;
+    in.kind = s.kind;
+    char buf[64];
+    if(s.impulsive_fraction > 0.)
+      std::snprintf(buf, sizeof buf, "impulsive %.0f%%, %.1f", 100. * s.impulsive_fraction, s.sigma);
+    else
+      std::snprintf(buf, sizeof buf, "Gaussian %.1f", s.sigma);
+    in.noise = buf;
+    if(!only.empty() && only != in.name && only != in.name + " " + in.noise)
+      continue;
+    if(!s.make(in.reference))
+    {
+      std::cerr << "cannot read " << s.name << "\n";
+      std::exit(1);
+    }
+    in.noisy = in.reference;
+    if(s.impulsive_fraction > 0.)
+      PMP::add_impulsive_noise(in.noisy, s.impulsive_fraction, s.sigma, CGAL::parameters::random_seed(1));
+    else
+      PMP::add_gaussian_noise(in.noisy, s.sigma, CGAL::parameters::random_seed(1));
+    inputs.push_back(std::move(in));
+  }
+  return inputs;
+}
+
+static D::Flat_mesh flat(const Mesh& m)
+{
+  return D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters>(m, CGAL::parameters::default_values())
+      .flat(m, "benchmark");
+}
+
+// E_n (degrees) of `points` on the connectivity of `m` against reference normals
+static double normal_error(const D::Flat_mesh& m, const std::vector<D::Vec3>& points,
+                           const std::vector<D::Vec3>& reference_normals)
+{
+  D::Face_data fd;
+  D::compute_face_data<CGAL::Sequential_tag>(m, points, fd);
+  double sum = 0.;
+  for(std::size_t f = 0; f < fd.normals.size(); ++f)
+    sum += std::atan2(D::norm(D::cross(fd.normals[f], reference_normals[f])), D::dot(fd.normals[f], reference_normals[f]));
+  return sum / double(fd.normals.size()) * (180. / 3.14159265358979323846);
+}
+
+struct Grid_best
+{
+  double En = 1e30, sigma = 0., radius = 0.;
+  unsigned int k = 0;
+};
+
+// The grid: sigma_s = sigma_r in `sigmas`, r in `radii` (in d), k = 1..kmax,
+// v = 2. Returns the best setting.
+static Grid_best grid_search(const Input& in, bool trace)
+{
+  const std::vector<double> sigmas = {0.2, 0.3, 0.4, 0.5, 0.7, 1.0, 1.4};
+  const std::vector<double> radii = {2., 3., 4., 6., 8.};
+  const unsigned int kmax = 150;
+  const D::Flat_mesh ref = flat(in.reference);
+  Grid_best best;
+  for(double r : radii)
+  {
+    const D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters> maps(in.noisy, CGAL::parameters::default_values());
+    const auto np = CGAL::parameters::relative_neighbor_radius(r);
+    D::Intrinsic_setup base = D::make_intrinsic_setup<Tag>(in.noisy, np, maps, "grid");
+    const double L = D::mean_edge_length(base.mesh);
+    // the setup may renumber faces (not vertices): reference normals in its order
+    D::Face_data ref_fd;
+    D::compute_face_data<CGAL::Sequential_tag>(base.mesh, ref.points, ref_fd);
+    for(double sigma : sigmas)
+    {
+      D::Intrinsic_kernel kernel = base.kernel;
+      kernel.sigma_spatial = kernel.sigma_range = sigma;
+      std::vector<D::Vec3> points = base.mesh.points;
+      const std::vector<D::Vec3> input_points = points;
+      D::Face_data current = base.input_faces;
+      std::vector<D::Vec3> filtered, previous, centroids, next;
+      const std::vector<char> fixed(points.size(), 0);
+      D::Fold_safeguard guard;
+      guard.enabled = true;
+      guard.reference = &base.input_faces.normals;
+      for(unsigned int k = 1; k <= kmax; ++k)
+      {
+        if(k > 1)
+          D::compute_face_data<Tag>(base.mesh, points, current);
+        D::intrinsic_filter_pass<Tag>(base.paths, current.normals, current.areas, kernel, filtered);
+        D::update_vertices<Tag>(base.mesh, points, filtered, fixed, 2, centroids, next, &guard);
+        const double En = normal_error(base.mesh, points, ref_fd.normals);
+        if(En < best.En)
+          best = {En, sigma, r, k};
+        if(trace)
+        {
+          double disp = 0., change = 0.;
+          for(std::size_t v = 0; v < points.size(); ++v)
+            disp += D::squared_norm(points[v] - input_points[v]);
+          disp = std::sqrt(disp / double(points.size())) / L;
+          if(!previous.empty())
+          {
+            for(std::size_t f = 0; f < filtered.size(); ++f)
+              change += std::atan2(D::norm(D::cross(filtered[f], previous[f])), D::dot(filtered[f], previous[f]));
+            change = change / double(filtered.size()) * (180. / 3.14159265358979323846);
+          }
+          std::fprintf(stderr, "%s | %s | r %.0f s %.2f k %2u | En %.3f | disp %.4f | change %.4f\n",
+                       in.name.c_str(), in.noise.c_str(), r, sigma, k, En, disp, change);
+        }
+        previous = filtered;
+      }
+    }
+  }
+  return best;
+}
+
+int main(int argc, char** argv)
+{
+  bool estimates_only = false, trace = false, grid = false;
+  std::string only;
+  std::vector<Extra> extras;
+  for(int i = 1; i < argc; ++i)
+  {
+    if(std::strcmp(argv[i], "--grid") == 0)
+      grid = true;
+    else if(std::strcmp(argv[i], "--estimates") == 0)
+      estimates_only = true;
+    else if(std::strcmp(argv[i], "--trace") == 0)
+      trace = true;
+    else if(std::strcmp(argv[i], "--only") == 0 && i + 1 < argc)
+      only = argv[++i];
+    else if(std::strcmp(argv[i], "--mesh") == 0 && i + 3 < argc)
+    {
+      extras.push_back({argv[i + 1], argv[i + 3], std::atof(argv[i + 2])});
+      i += 3;
+    }
+    else
+    {
+      std::cerr << "usage: auto_parameters_benchmark [--grid] [--estimates] [--trace] [--only name] [--mesh file.off sigma kind]...\n";
+      return 2;
+    }
+  }
+  const std::vector<Input> inputs = make_inputs(only, extras);
+  if(estimates_only)
+  {
+    std::printf("| input | kind | noise | faces | estimate q25 | q50 | noise-free q25 | q50 | estimate | median adjacent L1 normal difference |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    for(const Input& in : inputs)
+    {
+      const D::Flat_mesh a = flat(in.noisy), b = flat(in.reference);
+      const auto e25 = D::estimate_noise<Tag>(a, 0.25, 1.), e50 = D::estimate_noise<Tag>(a, 0.5, 1.);
+      const auto c25 = D::estimate_noise<Tag>(b, 0.25, 1.), c50 = D::estimate_noise<Tag>(b, 0.5, 1.);
+      D::Face_data fd;
+      D::compute_face_data<Tag>(a, a.points, fd);
+      std::vector<double> diffs;
+      for(std::size_t f = 0; f < a.number_of_faces(); ++f)
+        D::Face_vertex_adjacency{a}(std::uint32_t(f), [&](std::uint32_t g) {
+          if(g > f)
+          {
+            const D::Vec3 d = fd.normals[g] - fd.normals[f];
+            diffs.push_back(std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2]));
+          }
+        });
+      std::nth_element(diffs.begin(), diffs.begin() + diffs.size() / 2, diffs.end());
+      std::printf("| %s | %s | %s | %zu | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f |\n", in.name.c_str(), in.kind.c_str(),
+                  in.noise.c_str(), a.number_of_faces(), e25.relative_noise, e50.relative_noise, c25.relative_noise,
+                  c50.relative_noise, D::estimate_noise<Tag>(a).relative_noise, diffs[diffs.size() / 2]);
+    }
+    return 0;
+  }
+  std::printf("| input | kind | noise | faces | noisy E_n | auto E_n | estimated noise | sigma | r (d) | k | stop | auto s | fixed defaults E_n |"
+              "%s FDC03 | JDD03 | SRML07 | ZFAT11 | HS13 | ZDZ15 | best classic | auto / best classic |\n",
+              grid ? " grid best E_n | at (sigma, r, k) | auto / grid |" : "");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|%s---|---|---|---|---|---|---|---|\n",
+              grid ? "---|---|---|" : "");
+  for(const Input& in : inputs)
+  {
+    Mesh a = in.noisy;
+    const auto t0 = std::chrono::steady_clock::now();
+    const PMP::Intrinsic_denoising_report r = PMP::intrinsic_denoising<Tag>(a);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double auto_En = PMP::face_normal_error(a, in.reference);
+    const char* stop = r.stop_reason == PMP::Intrinsic_stop_reason::NOISE_LEVEL_REACHED ? "noise level"
+                       : r.stop_reason == PMP::Intrinsic_stop_reason::CONVERGED      ? "converged"
+                                                                                     : "limit";
+    std::printf("| %s | %s | %s | %zu | %.3f | **%.3f** | %.3f | %.3f | %.2f | %u | %s | %.2f |", in.name.c_str(),
+                in.kind.c_str(), in.noise.c_str(), std::size_t(num_faces(a)), PMP::face_normal_error(in.noisy, in.reference),
+                auto_En, r.noise_level, r.sigma_spatial, r.relative_neighbor_radius, r.iterations, stop, seconds);
+    Mesh fixed = in.noisy;
+    PMP::intrinsic_denoising<Tag>(fixed, CGAL::parameters::automatic_parameters(false));
+    std::printf(" %.3f |", PMP::face_normal_error(fixed, in.reference));
+    std::fflush(stdout);
+    if(grid)
+    {
+      const Grid_best g = grid_search(in, trace);
+      std::printf(" %.3f | (%.2f, %.0f, %u) | %.3f |", g.En, g.sigma, g.radius, g.k, auto_En / g.En);
+    }
+    const std::vector<std::function<void(Mesh&)>> classic = {
+        [](Mesh& m) { PMP::bilateral_mesh_denoising(m); },     [](Mesh& m) { PMP::non_iterative_denoising(m); },
+        [](Mesh& m) { PMP::fast_feature_preserving_denoising(m); }, [](Mesh& m) { PMP::bilateral_normal_denoising(m); },
+        [](Mesh& m) { PMP::l0_denoising(m); },                 [](Mesh& m) { PMP::guided_normal_denoising(m); }};
+    double best_classic = 1e30;
+    for(const auto& method : classic)
+    {
+      Mesh c = in.noisy;
+      method(c);
+      const double En = PMP::face_normal_error(c, in.reference);
+      best_classic = std::min(best_classic, En);
+      std::printf(" %.3f |", En);
+    }
+    std::printf(" %.3f | %.3f |\n", best_classic, auto_En / best_classic);
+    std::fflush(stdout);
+  }
+  return 0;
+}

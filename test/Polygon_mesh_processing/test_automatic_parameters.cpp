@@ -1,0 +1,215 @@
+// Tests of the automatic mode of intrinsic_denoising(): the noise estimate,
+// the parameters it derives, the stopping rule, the report and the progress
+// callback.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Polygon_mesh_processing/add_noise.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/denoising_error.h>
+#include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/noise_estimate.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include "synthetic_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace D = CGAL::Polygon_mesh_processing::internal::Denoising;
+
+const Mesh& fandisk()
+{
+  static const Mesh m = [] {
+    Mesh f;
+    if(!CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), f) || f.is_empty())
+      throw std::runtime_error("cannot read fandisk");
+    return f;
+  }();
+  return m;
+}
+
+double estimate(const Mesh& m)
+{
+  const D::Flat_mesh flat =
+      D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters>(m, CGAL::parameters::default_values())
+          .flat(m, "test");
+  return D::estimate_noise<CGAL::Sequential_tag>(flat).relative_noise;
+}
+
+// The largest angle (degrees) between a face normal of `m` and of `reference`.
+double max_normal_angle(const Mesh& m, const Mesh& reference)
+{
+  double worst = 0.;
+  for(Mesh::Face_index f : faces(m))
+  {
+    const K::Vector_3 a = PMP::compute_face_normal(f, m), b = PMP::compute_face_normal(f, reference);
+    worst = std::max(worst, std::acos(std::max(-1., std::min(1., a * b))) * 180. / CGAL_PI);
+  }
+  return worst;
+}
+
+} // namespace
+
+// The estimate follows sigma_E on a fixed mesh: increasing, within 15% of it
+// from 0.1 up, and near zero without noise (fandisk's flat and smooth parts
+// and its sharp edges; the cube's flat faces).
+TEST(AutomaticParameters, NoiseEstimateGrowsWithNoiseAndVanishesWithout)
+{
+  const std::vector<double> sigmas = {0., 0.025, 0.05, 0.1, 0.2, 0.3, 0.4};
+  double last = -1.;
+  for(double sigma : sigmas)
+  {
+    Mesh noisy = fandisk();
+    if(sigma > 0.)
+      PMP::add_gaussian_noise(noisy, sigma, CGAL::parameters::random_seed(3));
+    const double e = estimate(noisy);
+    EXPECT_GT(e, last) << "sigma_E " << sigma;
+    if(sigma == 0.)
+    {
+      EXPECT_LT(e, 0.005);
+    }
+    if(sigma >= 0.1)
+    {
+      EXPECT_NEAR(e, sigma, 0.15 * sigma) << "sigma_E " << sigma;
+    }
+    last = e;
+  }
+  EXPECT_LT(estimate(denoising_test::cube<Mesh>(12)), 1e-6);
+  Mesh noisy_cube = denoising_test::cube<Mesh>(12);
+  PMP::add_gaussian_noise(noisy_cube, 0.2, CGAL::parameters::random_seed(3));
+  EXPECT_NEAR(estimate(noisy_cube), 0.2, 0.03);
+}
+
+// The estimate does not depend on the mesh's scale (it is relative to the
+// mean edge length).
+TEST(AutomaticParameters, NoiseEstimateIsScaleFree)
+{
+  Mesh noisy = fandisk();
+  PMP::add_gaussian_noise(noisy, 0.2, CGAL::parameters::random_seed(3));
+  Mesh big = noisy;
+  for(auto v : vertices(big))
+    big.point(v) = CGAL::ORIGIN + 1000. * (big.point(v) - CGAL::ORIGIN);
+  EXPECT_NEAR(estimate(big), estimate(noisy), 1e-9);
+}
+
+// On a noise-free mesh the stopping rule ends the iterations at once, and the
+// cube's edges stay sharp: every face keeps its normal.
+TEST(AutomaticParameters, NoiseFreeCubeStopsAtOnceAndStaysSharp)
+{
+  const Mesh reference = denoising_test::cube<Mesh>(10);
+  Mesh m = reference;
+  const PMP::Intrinsic_denoising_report r = PMP::intrinsic_denoising(m);
+  EXPECT_TRUE(r.automatic_parameters);
+  EXPECT_TRUE(r.noise_level_estimated);
+  EXPECT_LT(r.noise_level, 1e-6);
+  EXPECT_LE(r.iterations, 3u);
+  EXPECT_NE(r.stop_reason, PMP::Intrinsic_stop_reason::ITERATION_LIMIT);
+  EXPECT_LT(max_normal_angle(m, reference), 1e-3);
+  EXPECT_LT(PMP::vertex_position_error(m, reference), 1e-6 * 0.2); // edge length 0.2
+}
+
+TEST(AutomaticParameters, NoiseFreeFandiskStopsWithinAFewIterations)
+{
+  Mesh m = fandisk();
+  const PMP::Intrinsic_denoising_report r = PMP::intrinsic_denoising(m);
+  EXPECT_LE(r.iterations, 3u);
+  EXPECT_NE(r.stop_reason, PMP::Intrinsic_stop_reason::ITERATION_LIMIT);
+  EXPECT_LT(PMP::face_normal_error(m, fandisk()), 0.5);
+}
+
+// The automatic mode on seeded noisy fandisk: the report names what was
+// chosen, the rule stopped before the limit, and the result is close to the
+// best of the benchmark's grid search (2.26 degrees at sigma_E = 0.3).
+TEST(AutomaticParameters, NoisyFandiskAutomaticMode)
+{
+  Mesh m = fandisk();
+  PMP::add_gaussian_noise(m, 0.3, CGAL::parameters::random_seed(1));
+  const PMP::Intrinsic_denoising_report r = PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(m);
+  EXPECT_NEAR(r.noise_level, 0.3, 0.03);
+  EXPECT_GT(r.sigma_spatial, 0.);
+  EXPECT_EQ(r.sigma_spatial, r.sigma_range);
+  EXPECT_GT(r.relative_neighbor_radius, 1.);
+  EXPECT_GT(r.neighbor_radius, 0.);
+  EXPECT_GT(r.iterations, 5u);
+  EXPECT_LT(r.iterations, r.maximum_iterations);
+  EXPECT_NE(r.stop_reason, PMP::Intrinsic_stop_reason::ITERATION_LIMIT);
+  EXPECT_LT(PMP::face_normal_error(m, fandisk()), 2.5);
+}
+
+// Every explicit parameter overrides the automatic choice; a given
+// number_of_iterations runs exactly (no stopping rule unless asked for).
+TEST(AutomaticParameters, ExplicitParametersOverride)
+{
+  Mesh noisy = fandisk();
+  PMP::add_gaussian_noise(noisy, 0.2, CGAL::parameters::random_seed(2));
+  Mesh a = noisy;
+  const auto r = PMP::intrinsic_denoising(
+      a, CGAL::parameters::sigma_spatial(0.3).sigma_range(0.35).relative_neighbor_radius(3.).number_of_iterations(7));
+  EXPECT_EQ(r.sigma_spatial, 0.3);
+  EXPECT_EQ(r.sigma_range, 0.35);
+  EXPECT_NEAR(r.relative_neighbor_radius, 3., 1e-12);
+  EXPECT_EQ(r.iterations, 7u);
+  EXPECT_EQ(r.maximum_iterations, 7u);
+  EXPECT_EQ(r.stop_reason, PMP::Intrinsic_stop_reason::ITERATION_LIMIT);
+
+  // automatic_parameters(false): the fixed defaults, bitwise the old behaviour
+  Mesh b = noisy, c = noisy;
+  const auto rb = PMP::intrinsic_denoising(b, CGAL::parameters::automatic_parameters(false).number_of_iterations(5));
+  PMP::intrinsic_denoising(c, CGAL::parameters::sigma_spatial(0.4).sigma_range(0.4).relative_neighbor_radius(4.)
+                                  .number_of_iterations(5).automatic_parameters(false));
+  EXPECT_EQ(rb.sigma_spatial, 0.4);
+  EXPECT_EQ(rb.relative_neighbor_radius, 4.);
+  for(auto v : vertices(b))
+    ASSERT_EQ(b.point(v), c.point(v));
+
+  // a given number_of_iterations with the stopping rule asked for is a limit
+  Mesh d = noisy;
+  const auto rd = PMP::intrinsic_denoising(d, CGAL::parameters::number_of_iterations(200).stop_when_converged(true));
+  EXPECT_EQ(rd.maximum_iterations, 200u);
+  EXPECT_LT(rd.iterations, 200u);
+}
+
+// A given noise level replaces the estimate; 0 means "no noise": one
+// iteration, then the rule stops.
+TEST(AutomaticParameters, GivenNoiseLevel)
+{
+  Mesh noisy = fandisk();
+  PMP::add_gaussian_noise(noisy, 0.2, CGAL::parameters::random_seed(2));
+  Mesh a = noisy;
+  const auto r = PMP::intrinsic_denoising(a, CGAL::parameters::noise_level(0.));
+  EXPECT_FALSE(r.noise_level_estimated);
+  EXPECT_EQ(r.noise_level, 0.);
+  EXPECT_EQ(r.iterations, 1u);
+  EXPECT_EQ(r.stop_reason, PMP::Intrinsic_stop_reason::NOISE_LEVEL_REACHED);
+  Mesh b = noisy;
+  EXPECT_THROW(PMP::intrinsic_denoising(b, CGAL::parameters::noise_level(-1.)), std::invalid_argument);
+  for(auto v : vertices(b))
+    ASSERT_EQ(b.point(v), noisy.point(v));
+}
+
+TEST(AutomaticParameters, ProgressCallbackSeesEveryIteration)
+{
+  Mesh m = fandisk();
+  PMP::add_gaussian_noise(m, 0.1, CGAL::parameters::random_seed(2));
+  std::vector<std::size_t> seen;
+  std::size_t limit = 0;
+  const auto r = PMP::intrinsic_denoising(
+      m, CGAL::parameters::number_of_iterations(4).progress_callback([&](std::size_t done, std::size_t max) {
+        seen.push_back(done);
+        limit = max;
+      }));
+  EXPECT_EQ(r.iterations, 4u);
+  EXPECT_EQ(seen, (std::vector<std::size_t>{1, 2, 3, 4}));
+  EXPECT_EQ(limit, 4u);
+}
