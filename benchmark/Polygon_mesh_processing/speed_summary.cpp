@@ -106,7 +106,7 @@ template <typename Tag> static Row measure(const Mesh &noisy, const Mesh &refere
       [&]
       {
         result = noisy;
-        PMP::intrinsic_denoising<Tag>(result, CGAL::parameters::number_of_iterations(k));
+        PMP::intrinsic_denoising<Tag>(result, CGAL::parameters::number_of_iterations(k).automatic_parameters(false));
       },
       num_faces(noisy) < 100000 ? 3 : 1);
   row.En = PMP::face_normal_error(result, reference);
@@ -279,9 +279,9 @@ static int memory_row(int i)
       {
 #ifdef CGAL_LINKED_WITH_TBB
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-        PMP::intrinsic_denoising<CGAL::Parallel_tag>(mesh, CGAL::parameters::number_of_iterations(in.k));
+        PMP::intrinsic_denoising<CGAL::Parallel_tag>(mesh, CGAL::parameters::number_of_iterations(in.k).automatic_parameters(false));
 #else
-        PMP::intrinsic_denoising<CGAL::Sequential_tag>(mesh, CGAL::parameters::number_of_iterations(in.k));
+        PMP::intrinsic_denoising<CGAL::Sequential_tag>(mesh, CGAL::parameters::number_of_iterations(in.k).automatic_parameters(false));
 #endif
       });
   std::printf("| %s | %zu | %u | %.3f | %.0f | %.0f | %.0f | %.0f |\n", in.name.c_str(), (std::size_t)num_faces(mesh),
@@ -344,7 +344,16 @@ static void methods_table(const std::string &self)
 #else
   typedef CGAL::Sequential_tag Par;
 #endif
-  row("intrinsic_denoising", "defaults (r 4d, sigma 0.4, k 30, v 2)",
+  row("intrinsic_denoising", "fixed defaults (automatic_parameters(false): r 4d, sigma 0.4, k 30, v 2)",
+      [](Mesh &m, int threads)
+      {
+        const auto np = CGAL::parameters::automatic_parameters(false);
+        if(threads == 1)
+          PMP::intrinsic_denoising<CGAL::Sequential_tag>(m, np);
+        else
+          PMP::intrinsic_denoising<Par>(m, np);
+      });
+  row("intrinsic_denoising", "automatic (the default; noise estimate, stopping rule)",
       [](Mesh &m, int threads)
       {
         if(threads == 1)
