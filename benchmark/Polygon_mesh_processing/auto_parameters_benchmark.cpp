@@ -150,10 +150,7 @@ static double normal_error(const D::Flat_mesh& m, const std::vector<D::Vec3>& po
 {
   D::Face_data fd;
   D::compute_face_data<CGAL::Sequential_tag>(m, points, fd);
-  double sum = 0.;
-  for(std::size_t f = 0; f < fd.normals.size(); ++f)
-    sum += std::atan2(D::norm(D::cross(fd.normals[f], reference_normals[f])), D::dot(fd.normals[f], reference_normals[f]));
-  return sum / double(fd.normals.size()) * (180. / 3.14159265358979323846);
+  return D::mean_angle_degrees(fd.normals, reference_normals);
 }
 
 struct Grid_best

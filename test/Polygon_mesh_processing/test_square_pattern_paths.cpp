@@ -228,3 +228,48 @@ TEST(SquarePattern, RenumberedFacesGiveTheSameTreesAndNormals)
   expect_renumbering_changes_nothing<CGAL::Parallel_tag>(fandisk);
 #endif
 }
+
+// The SSE2 kernel of the paper's case (n = m = 1) gives bitwise the filtered
+// normals of the generic engine, with and without the self term; and its
+// two-lane exp is bitwise the scalar one, down to the flush to 0.
+TEST(FilterPass, VectorKernelEqualsGenericEngine)
+{
+  Mesh fandisk;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
+  CGAL::Polygon_mesh_processing::add_gaussian_noise(fandisk, 0.3, CGAL::parameters::random_seed(5));
+  D::Flat_mesh m = D::make_flat_mesh(fandisk, get(CGAL::vertex_point, fandisk), get(CGAL::vertex_index, fandisk),
+                                     get(CGAL::face_index, fandisk), "test");
+  D::Face_data fd;
+  D::compute_face_data<CGAL::Sequential_tag>(m, m.points, fd);
+  const double r = 4. * D::mean_adjacent_centroid_distance(m, fd);
+  const D::Path_forest forest = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r);
+  for(bool self : {false, true})
+    for(double sigma : {0.2, 0.4, 1.3})
+    {
+      D::Intrinsic_kernel kernel;
+      kernel.include_self = self;
+      kernel.sigma_spatial = sigma;
+      kernel.sigma_range = 0.5 * sigma;
+      std::vector<D::Vec3> fast, generic;
+      D::intrinsic_filter_pass<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel, fast);
+      D::intrinsic_filter_pass_generic<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel, generic);
+      ASSERT_EQ(fast.size(), generic.size());
+      std::size_t different = 0;
+      for(std::size_t f = 0; f < fast.size(); ++f)
+        different += fast[f] != generic[f] ? 1 : 0;
+      EXPECT_EQ(different, 0u) << "self " << self << " sigma " << sigma;
+    }
+#ifdef CGAL_PMP_DENOISING_SSE2
+  const D::Exp_table& table = D::Exp_table::instance();
+  std::size_t different = 0, tried = 0;
+  for(double x = -720.; x <= 0.; x += 0.0137)
+    for(double y : {x, x - 1e-9, -0., std::nextafter(-707., 0.), -707., -1e300})
+    {
+      double lanes[2];
+      _mm_storeu_pd(lanes, D::exp_nonpositive_2(_mm_set_pd(x, y), table));
+      different += (lanes[0] != D::exp_nonpositive(y, table)) + (lanes[1] != D::exp_nonpositive(x, table));
+      tried += 2;
+    }
+  EXPECT_EQ(different, 0u) << "of " << tried;
+#endif
+}

@@ -103,7 +103,7 @@ void bilateral_normal_denoising(TriangleMesh &tmesh, const NamedParameters &np =
   const bool geometric = !is_default_parameter<NamedParameters, internal_np::neighbor_radius_t>::value ||
                          !is_default_parameter<NamedParameters, internal_np::relative_neighbor_radius_t>::value;
   const D::Csr neighbors =
-      geometric ? D::geometric_neighborhoods<ConcurrencyTag>(mesh, input.centroids, D::read_radius_or(np, fname, d, 1.))
+      geometric ? D::geometric_neighborhoods<ConcurrencyTag>(mesh, input.centroids, D::read_radius(np, fname, d, 1.))
                 : D::topological_face_neighbors(mesh, 1);
   const D::Path_forest direct = D::direct_paths(neighbors);
   const double sigma_s = relative_sigma_s * (d > 0. ? d : 1.);

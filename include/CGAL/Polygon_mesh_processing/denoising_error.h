@@ -59,13 +59,7 @@ double face_normal_error(const TriangleMesh1& denoised, const TriangleMesh2& ref
   D::Face_data fa, fb;
   D::compute_face_data<CGAL::Sequential_tag>(a, a.points, fa);
   D::compute_face_data<CGAL::Sequential_tag>(b, b.points, fb);
-  double sum = 0.;
-  for(std::size_t f = 0; f < a.number_of_faces(); ++f)
-  {
-    const D::Vec3 &na = fa.normals[f], &nb = fb.normals[f];
-    sum += std::atan2(D::norm(D::cross(na, nb)), D::dot(na, nb)); // robust for nearly equal normals
-  }
-  return sum / double(a.number_of_faces()) * (180. / 3.14159265358979323846);
+  return D::mean_angle_degrees(fa.normals, fb.normals);
 }
 
 /*!

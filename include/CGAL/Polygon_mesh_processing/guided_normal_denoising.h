@@ -172,7 +172,7 @@ void guided_normal_denoising(TriangleMesh &tmesh, const NamedParameters &np = pa
   D::Face_data input;
   D::compute_face_data<ConcurrencyTag>(mesh, mesh.points, input);
   const double d = D::mean_adjacent_centroid_distance(mesh, input);
-  const double radius = D::read_radius_or(np, fname, d, 2.);
+  const double radius = D::read_radius(np, fname, d, 2.);
   const D::Csr neighbors = D::geometric_neighborhoods<ConcurrencyTag>(mesh, input.centroids, radius);
   const D::Path_forest direct = D::direct_paths(neighbors);
   const D::Csr ring = D::topological_face_neighbors(mesh, 1);

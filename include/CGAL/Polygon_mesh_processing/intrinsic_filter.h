@@ -335,7 +335,7 @@ void intrinsic_filter(const TriangleMesh& tmesh, const SignalMap& signal, Filter
   auto run = [&](const auto& keys, std::size_t count, const auto& index, const std::vector<D::Vec3>& positions,
                  const std::vector<D::Vec3>& normals, const std::vector<double>& measure, const auto& adjacency,
                  double unit) {
-    const double radius = D::read_radius(np, fname, unit);
+    const double radius = D::read_radius(np, fname, unit, D::Intrinsic_defaults::relative_radius);
     const D::Csr neighbors = D::geometric_neighborhoods<ConcurrencyTag>(positions, adjacency, radius);
     const D::Path_forest paths = D::make_paths<ConcurrencyTag>(np, strategy, step_length, unit, positions, adjacency,
                                                                neighbors, on_faces ? &m : nullptr,

@@ -89,18 +89,6 @@ inline double relative_rms_displacement(const Flat_mesh& m, const std::vector<Ve
   return count == 0 || !(unit > 0.) ? 0. : std::sqrt(sum / double(count)) / unit;
 }
 
-// Mean angle (degrees) between two sets of unit normals; pairs with a zero
-// normal count as unchanged.
-inline double mean_angle_degrees(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
-{
-  if(a.empty())
-    return 0.;
-  double sum = 0.;
-  for(std::size_t f = 0; f < a.size(); ++f)
-    sum += std::atan2(norm(cross(a[f], b[f])), dot(a[f], b[f]));
-  return sum / double(a.size()) * (180. / 3.14159265358979323846);
-}
-
 } // namespace Denoising
 } // namespace internal
 } // namespace Polygon_mesh_processing

@@ -165,24 +165,6 @@ void bilateral_normal_pass(const Path_forest &direct, const Face_data &fd, const
                                          });
 }
 
-// The neighbourhood radius: neighbor_radius if given, else
-// relative_neighbor_radius (default `default_relative`) times `unit`.
-template <typename NamedParameters>
-double read_radius_or(const NamedParameters &np, const char *fname, double unit, double default_relative)
-{
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::neighbor_radius_t>::value)
-  {
-    const double absolute = get_parameter(np, internal_np::neighbor_radius);
-    require_positive(absolute, fname, "neighbor_radius");
-    return absolute;
-  }
-  const double relative = choose_parameter(get_parameter(np, internal_np::relative_neighbor_radius), default_relative);
-  require_positive(relative, fname, "relative_neighbor_radius");
-  return relative * unit;
-}
-
 // Throws std::invalid_argument unless x is in [0, 1) and finite (thresholds).
 inline void require_unit_interval(double x, const char *function_name, const char *what)
 {

@@ -53,7 +53,22 @@ inline Vec3 cross(const Vec3& a, const Vec3& b)
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 inline double squared_norm(const Vec3& a) { return dot(a, a); }
+
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+
+// Mean angle (degrees) between two equally long sets of unit normals, pair by
+// pair; atan2 of |a x b| and a . b stays accurate for nearly equal normals.
+// A pair with a zero normal counts as 0. E_n (eq. 12) is this between the
+// face normals of two meshes.
+inline double mean_angle_degrees(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
+{
+  if(a.empty())
+    return 0.;
+  double sum = 0.;
+  for(std::size_t f = 0; f < a.size(); ++f)
+    sum += std::atan2(norm(cross(a[f], b[f])), dot(a[f], b[f]));
+  return sum / double(a.size()) * (180. / 3.14159265358979323846);
+}
 
 // A triangle mesh as arrays: vertex positions and, per face, its three vertex
 // indices in the face's orientation; plus vertex -> incident faces in CSR form.

@@ -16,6 +16,11 @@
 #include <cstring>
 #include <vector>
 
+#if defined(__SSE2__) && !defined(CGAL_PMP_DENOISING_NO_SIMD)
+#include <emmintrin.h>
+#define CGAL_PMP_DENOISING_SSE2 1
+#endif
+
 namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
@@ -166,13 +171,13 @@ void intrinsic_weights_pass(const Path_forest& forest, const Intrinsic_kernel& k
   });
 }
 
-// One pass of eq. 8 on face normals: the engine with phi = psi = J = n and the
+// One pass of eq. 8 on face normals, through the generic engine: the engine with phi = psi = J = n and the
 // face areas as measure. out[i] = normalised sum over the weighted nodes j of
 // face i's tree of A_j g(d^s) g(d^r) n_j (plus A_i n_i with the self term). A
 // face whose weighted sum vanishes (no neighbour, or weights that cancel)
 // keeps its normal.
 template <typename ConcurrencyTag>
-void intrinsic_filter_pass(const Path_forest& forest, const std::vector<Vec3>& normals,
+void intrinsic_filter_pass_generic(const Path_forest& forest, const std::vector<Vec3>& normals,
                            const std::vector<double>& areas, const Intrinsic_kernel& kernel,
                            std::vector<Vec3>& out)
 {
@@ -194,6 +199,124 @@ void intrinsic_filter_pass(const Path_forest& forest, const std::vector<Vec3>& n
         const double len = norm(sum);
         out[i] = (len > 0. && std::isfinite(len)) ? (1. / len) * sum : normals[i];
       });
+}
+
+#ifdef CGAL_PMP_DENOISING_SSE2
+// exp_nonpositive on two values at once: the same operations in the same
+// order, so each lane is bitwise the scalar result.
+inline __m128d exp_nonpositive_2(__m128d x, const Exp_table& table)
+{
+  const __m128d shifter = _mm_set1_pd(6755399441055744.0);
+  const __m128d low = _mm_set1_pd(-707.);
+  const __m128d keep = _mm_cmpgt_pd(x, low);
+  const __m128d xc = _mm_or_pd(_mm_and_pd(keep, x), _mm_andnot_pd(keep, low));
+  const double to_index = 64. / 6.93147180559945309417e-01;
+  const __m128d t = _mm_add_pd(_mm_mul_pd(xc, _mm_set1_pd(to_index)), shifter);
+  const __m128d md = _mm_sub_pd(t, shifter);
+  const __m128d r = _mm_sub_pd(_mm_sub_pd(xc, _mm_mul_pd(md, _mm_set1_pd(6.93147180369123816490e-01 / 64.))),
+                               _mm_mul_pd(md, _mm_set1_pd(1.90821492927058770002e-10 / 64.)));
+  const __m128d r2 = _mm_mul_pd(r, r);
+  const __m128d inner1 = _mm_add_pd(_mm_set1_pd(0.5), _mm_mul_pd(r, _mm_set1_pd(1. / 6.)));
+  const __m128d inner2 = _mm_add_pd(_mm_set1_pd(1. / 24.), _mm_mul_pd(r, _mm_set1_pd(1. / 120.)));
+  const __m128d poly = _mm_add_pd(_mm_add_pd(_mm_set1_pd(1.), r),
+                                  _mm_mul_pd(r2, _mm_add_pd(inner1, _mm_mul_pd(r2, inner2))));
+  const __m128i m = _mm_sub_epi64(_mm_castpd_si128(t), _mm_set1_epi64x(0x4338000000000000ll));
+  const std::int64_t m0 = _mm_cvtsi128_si64(m), m1 = _mm_cvtsi128_si64(_mm_unpackhi_epi64(m, m));
+  const __m128d base = _mm_set_pd(table.two_to_j_64[m1 & 63], table.two_to_j_64[m0 & 63]);
+  // (m >> 6) << 52 without an arithmetic 64-bit shift: the sign bits that
+  // differ are shifted out
+  const __m128i k = _mm_slli_epi64(_mm_and_si128(m, _mm_set1_epi64x(~std::int64_t(63))), 46);
+  const __m128d scale = _mm_castsi128_pd(_mm_add_epi64(_mm_castpd_si128(base), k));
+  return _mm_and_pd(keep, _mm_mul_pd(poly, scale));
+}
+
+// The paper's case of intrinsic_filter_pass (n = m = 1, no step lengths)
+// with SSE2: the two roots of a node (its step ||n_k - n_parent|| and its
+// range term ||n_k - n_i||) are taken by one instruction, and the weights two
+// nodes at a time. Every operation is the scalar engine's, in its order, so
+// the result is bitwise that of intrinsic_filter_pass_generic (a test checks).
+template <typename ConcurrencyTag>
+void intrinsic_filter_pass_l1_sse2(const Path_forest& forest, const std::vector<Vec3>& normals,
+                                   const std::vector<double>& areas, const Intrinsic_kernel& kernel,
+                                   std::vector<Vec3>& out)
+{
+  const std::size_t n = forest.number_of_faces();
+  const std::size_t max_nodes = forest.max_nodes_per_face();
+  const double a = 1. / (2. * kernel.sigma_spatial * kernel.sigma_spatial),
+               b = 1. / (2. * kernel.sigma_range * kernel.sigma_range);
+  const Exp_table& table = Exp_table::instance();
+  const bool all_weighted = forest.weighted.empty();
+  for_each_chunk<ConcurrencyTag>(n, [&](std::size_t ib, std::size_t ie) {
+    // sums[2 (k + 1)] = spatial sum of node k, sums[2 (k + 1) + 1] its range
+    // sum; slot 0 is the root's (0, 0); one spare node pads an odd count
+    std::vector<double> sums(2 * (max_nodes + 2), 0.), weight(max_nodes + 1);
+    const __m128d va = _mm_set1_pd(a), vb = _mm_set1_pd(b);
+    const __m128d sign = _mm_set1_pd(-0.);
+    for(std::size_t i = ib; i < ie; ++i)
+    {
+      const std::uint32_t nb = forest.offsets[i], ne = forest.offsets[i + 1];
+      const std::uint32_t* face = forest.face.data() + nb;
+      const std::int32_t* parent = forest.parent.data() + nb;
+      const std::uint32_t count = ne - nb;
+      const Vec3& ni = normals[i];
+      // high lanes: the root's normal, for the range terms
+      const __m128d nix = _mm_set1_pd(ni[0]), niy = _mm_set1_pd(ni[1]), niz = _mm_set1_pd(ni[2]);
+      double* sum_slot = sums.data();
+      for(std::uint32_t k = 0; k < count; ++k)
+      {
+        const std::int32_t p = parent[k];
+        const Vec3& nk = normals[face[k]];
+        const Vec3& nf = normals[p < 0 ? std::uint32_t(i) : face[p]];
+        const __m128d dx = _mm_sub_pd(_mm_set1_pd(nk[0]), _mm_loadl_pd(nix, &nf[0]));
+        const __m128d dy = _mm_sub_pd(_mm_set1_pd(nk[1]), _mm_loadl_pd(niy, &nf[1]));
+        const __m128d dz = _mm_sub_pd(_mm_set1_pd(nk[2]), _mm_loadl_pd(niz, &nf[2]));
+        const __m128d sq = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
+        _mm_storeu_pd(sum_slot + 2 * (k + 1), _mm_add_pd(_mm_loadu_pd(sum_slot + 2 * (p + 1)), _mm_sqrt_pd(sq)));
+      }
+      if(count % 2)
+        _mm_storeu_pd(sum_slot + 2 * (count + 1), _mm_setzero_pd());
+      for(std::uint32_t k = 0; k < count; k += 2)
+      {
+        const __m128d v0 = _mm_loadu_pd(sum_slot + 2 * (k + 1)), v1 = _mm_loadu_pd(sum_slot + 2 * (k + 2));
+        const __m128d sp = _mm_unpacklo_pd(v0, v1), rg = _mm_unpackhi_pd(v0, v1);
+        const __m128d x = _mm_sub_pd(_mm_mul_pd(_mm_xor_pd(_mm_mul_pd(sp, sp), sign), va), _mm_mul_pd(_mm_mul_pd(rg, rg), vb));
+        _mm_storeu_pd(weight.data() + k, exp_nonpositive_2(x, table));
+      }
+      Vec3 sum = {0., 0., 0.};
+      if(kernel.include_self)
+        sum = areas[i] * ni;
+      for(std::uint32_t k = 0; k < count; ++k)
+        if(all_weighted || forest.weighted[nb + k])
+        {
+          const std::uint32_t j = face[k];
+          sum = sum + (areas[j] * weight[k]) * normals[j];
+        }
+      const double len = norm(sum);
+      out[i] = (len > 0. && std::isfinite(len)) ? (1. / len) * sum : ni;
+    }
+  });
+}
+#endif
+
+// One pass of eq. 8 on face normals: out[i] = normalised sum over the
+// weighted nodes j of face i's tree of A_j g(d^s) g(d^r) n_j (plus A_i n_i
+// with the self term). A face whose weighted sum vanishes (no neighbour, or
+// weights that cancel) keeps its normal. The paper's case (n = m = 1, no step
+// lengths) takes the SSE2 kernel where the compiler targets SSE2.
+template <typename ConcurrencyTag>
+void intrinsic_filter_pass(const Path_forest& forest, const std::vector<Vec3>& normals,
+                           const std::vector<double>& areas, const Intrinsic_kernel& kernel,
+                           std::vector<Vec3>& out)
+{
+#ifdef CGAL_PMP_DENOISING_SSE2
+  if(kernel.spatial_exponent == 1. && kernel.range_exponent == 1. && forest.step.empty())
+  {
+    out.resize(forest.number_of_faces());
+    intrinsic_filter_pass_l1_sse2<ConcurrencyTag>(forest, normals, areas, kernel, out);
+    return;
+  }
+#endif
+  intrinsic_filter_pass_generic<ConcurrencyTag>(forest, normals, areas, kernel, out);
 }
 
 } // namespace Denoising

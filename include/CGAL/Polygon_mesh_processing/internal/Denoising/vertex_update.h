@@ -47,6 +47,11 @@ struct Fold_safeguard
   // counters of the last call of update_vertices (for tests and benchmarks)
   std::size_t halved_moves = 0; // vertex moves halved at least once
   std::size_t frozen_moves = 0; // vertex moves cancelled
+  // scratch space of apply_fold_safeguard, kept between steps so that the
+  // iterations allocate nothing once the first has run
+  std::vector<double> scale;
+  std::vector<char> bad;
+  std::vector<std::uint32_t> stamp, bad_faces, moved, recheck;
 };
 
 // Whether moving the corners of triangle t from `before` to `after` folds it
@@ -70,52 +75,76 @@ inline bool folds(const std::array<std::uint32_t, 3>& t, const std::vector<Vec3>
 }
 
 // Restricts the moves `points` -> `next` of one step as described above;
-// `scale` and `bad` are scratch space.
+// the scratch space is the guard's. Only the first check looks at
+// every face: a later round re-checks just the faces around the vertices the
+// round moved back, since whether a face folds depends on its own three
+// vertices only. So every round finds the same folding faces as a check of all
+// faces would, and the result does not depend on the number of threads.
 template <typename ConcurrencyTag>
 void apply_fold_safeguard(const Flat_mesh& m, const std::vector<Vec3>& points, std::vector<Vec3>& next,
-                          const std::vector<Vec3>& normals, Fold_safeguard& guard, std::vector<double>& scale,
-                          std::vector<char>& bad)
+                          const std::vector<Vec3>& normals, Fold_safeguard& guard)
 {
+  std::vector<double>& scale = guard.scale;
+  std::vector<char>& bad = guard.bad;
+  std::vector<std::uint32_t>&stamp = guard.stamp, &bad_faces = guard.bad_faces, &moved = guard.moved,
+                             &recheck = guard.recheck;
   const std::size_t nf = m.number_of_faces(), nv = m.number_of_vertices();
-  bad.assign(nf, 0);
+  bad.resize(nf);
+  for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t f = b; f < e; ++f)
+      bad[f] = folds(m.triangles[f], points, next, normals[f], (*guard.reference)[f]) ? 1 : 0;
+  });
+  bad_faces.clear();
+  for(std::size_t f = 0; f < nf; ++f)
+    if(bad[f])
+      bad_faces.push_back(std::uint32_t(f));
+  if(bad_faces.empty())
+    return;
   scale.assign(nv, 1.);
-  // marks the folding faces; returns whether there is one
-  auto check = [&]() {
-    for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
-      for(std::size_t f = b; f < e; ++f)
-        bad[f] = folds(m.triangles[f], points, next, normals[f], (*guard.reference)[f]) ? 1 : 0;
-    });
-    for(char x : bad)
-      if(x)
-        return true;
-    return false;
-  };
-  auto touches_bad_face = [&](std::size_t v) {
-    for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
-      if(bad[m.vertex_faces[k]])
-        return true;
-    return false;
-  };
-  for(unsigned int round = 0; check(); ++round)
+  // stamp[v] / stamp[nv + f]: the last round (from 1) that listed vertex v /
+  // face f, so that each is listed once per round
+  stamp.assign(nv + nf, 0u);
+  for(std::uint32_t round = 0; !bad_faces.empty(); ++round)
   {
     const bool halve = round < guard.max_halvings;
-    for_each_chunk<ConcurrencyTag>(nv, [&](std::size_t b, std::size_t e) {
-      for(std::size_t v = b; v < e; ++v)
-      {
-        if(scale[v] == 0. || !touches_bad_face(v))
-          continue;
-        if(halve)
+    const std::uint32_t mark = round + 1;
+    moved.clear();
+    for(std::uint32_t f : bad_faces)
+      for(std::uint32_t v : m.triangles[f])
+        if(scale[v] != 0. && stamp[v] != mark)
         {
-          next[v] = points[v] + 0.5 * (next[v] - points[v]);
-          scale[v] *= 0.5;
+          stamp[v] = mark;
+          moved.push_back(v);
         }
-        else
+    recheck.clear();
+    for(std::uint32_t v : moved)
+    {
+      if(halve)
+      {
+        next[v] = points[v] + 0.5 * (next[v] - points[v]);
+        scale[v] *= 0.5;
+      }
+      else
+      {
+        next[v] = points[v];
+        scale[v] = 0.;
+      }
+      for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
+      {
+        const std::uint32_t f = m.vertex_faces[k];
+        if(stamp[nv + f] != mark)
         {
-          next[v] = points[v];
-          scale[v] = 0.;
+          stamp[nv + f] = mark;
+          recheck.push_back(f);
         }
       }
-    });
+    }
+    // a face that folds has a vertex that moved this round (one whose three
+    // vertices stay cannot fold), so it is among the re-checked faces
+    bad_faces.clear();
+    for(std::uint32_t f : recheck)
+      if(folds(m.triangles[f], points, next, normals[f], (*guard.reference)[f]))
+        bad_faces.push_back(f);
   }
   for(std::size_t v = 0; v < nv; ++v)
   {
@@ -138,8 +167,6 @@ void update_vertices(const Flat_mesh& m, std::vector<Vec3>& points, const std::v
                      const std::vector<char>& fixed, unsigned int iterations, std::vector<Vec3>& centroids,
                      std::vector<Vec3>& next, Fold_safeguard* guard = nullptr)
 {
-  std::vector<double> guard_scale;
-  std::vector<char> guard_bad;
   const std::size_t nf = m.number_of_faces(), nv = m.number_of_vertices();
   std::vector<Vec3> start_orientation;
   if(guard)
@@ -187,7 +214,7 @@ void update_vertices(const Flat_mesh& m, std::vector<Vec3>& points, const std::v
       }
     });
     if(active_guard)
-      apply_fold_safeguard<ConcurrencyTag>(m, points, next, normals, *active_guard, guard_scale, guard_bad);
+      apply_fold_safeguard<ConcurrencyTag>(m, points, next, normals, *active_guard);
     points.swap(next);
   }
   if(guard)
