@@ -273,3 +273,28 @@ TEST(FilterPass, VectorKernelEqualsGenericEngine)
   EXPECT_EQ(different, 0u) << "of " << tried;
 #endif
 }
+
+// The two-pass construction (used from 200,000 faces on, forced here) builds
+// the same forest as the chunked one, node for node.
+TEST(SquarePattern, TwoPassConstructionGivesTheSameForest)
+{
+  Mesh fandisk;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
+  CGAL::Polygon_mesh_processing::add_gaussian_noise(fandisk, 0.3, CGAL::parameters::random_seed(7));
+  D::Flat_mesh m = D::make_flat_mesh(fandisk, get(CGAL::vertex_point, fandisk), get(CGAL::vertex_index, fandisk),
+                                     get(CGAL::face_index, fandisk), "test");
+  D::Face_data fd;
+  D::compute_face_data<CGAL::Sequential_tag>(m, m.points, fd);
+  const double r = 4. * D::mean_adjacent_centroid_distance(m, fd);
+  const D::Path_forest chunked = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r);
+  const D::Path_forest two_pass = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r, 0);
+  EXPECT_EQ(two_pass.offsets, chunked.offsets);
+  EXPECT_EQ(two_pass.face, chunked.face);
+  EXPECT_EQ(two_pass.parent, chunked.parent);
+  EXPECT_GT(chunked.face.size(), 30u * m.number_of_faces());
+#ifdef CGAL_LINKED_WITH_TBB
+  const D::Path_forest parallel = D::square_pattern_paths_within<CGAL::Parallel_tag>(m, fd, r, 0);
+  EXPECT_EQ(parallel.face, chunked.face);
+  EXPECT_EQ(parallel.parent, chunked.parent);
+#endif
+}
