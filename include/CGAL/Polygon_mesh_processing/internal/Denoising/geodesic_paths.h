@@ -312,6 +312,13 @@ public:
         corner_degrees_[3 * f + c] =
             corner_angle_degrees(m.points[t[(c + 2) % 3]], m.points[t[c]], m.points[t[(c + 1) % 3]]);
       }
+    one_fan_.assign(m.number_of_vertices(), 0);
+    for(std::uint32_t v = 0; v < m.number_of_vertices(); ++v)
+    {
+      fan_faces_.assign(m.vertex_faces.begin() + m.vertex_face_offsets[v],
+                        m.vertex_faces.begin() + m.vertex_face_offsets[v + 1]);
+      one_fan_[v] = group_fans(v) == 1;
+    }
   }
   // shortest_path_ refers to patch_: neither copied nor moved
   Geodesic_patch_solver(const Geodesic_patch_solver&) = delete;
@@ -471,6 +478,21 @@ private:
     }
     const std::size_t n = fan_faces_.size();
     fan_root_.resize(n);
+    // all the faces around a vertex whose faces form one fan: one fan (the
+    // common case, inside the patch)
+    if(one_fan_[v] && n == m_.vertex_face_offsets[v + 1] - m_.vertex_face_offsets[v])
+    {
+      std::fill(fan_root_.begin(), fan_root_.end(), std::size_t(0));
+      return n == 0 ? 0 : 1;
+    }
+    return group_fans(v);
+  }
+
+  // Union-find of fan_faces_ (around v) by shared edges; returns the number of fans.
+  std::size_t group_fans(std::uint32_t v)
+  {
+    const std::size_t n = fan_faces_.size();
+    fan_root_.resize(n);
     for(std::size_t a = 0; a < n; ++a)
       fan_root_[a] = a;
     std::size_t fans = n;
@@ -537,7 +559,7 @@ private:
     // halfedges: out_first_[v] / out_next_[h] list the halfedges leaving v
     const std::size_t nv = patch_.number_of_vertices();
     out_first_.assign(nv, no_face);
-    out_next_.clear();
+    out_next_.assign(6 * nf, no_face); // at most 3 nf edges
     const halfedge_descriptor null_h = Patch::null_halfedge();
     for(std::size_t k = 0; k < nf; ++k)
     {
@@ -564,7 +586,6 @@ private:
           patch_.set_target(h[c], vertex_descriptor(b));
           patch_.set_target(o, vertex_descriptor(a));
           patch_.set_face(o, Patch::null_face());
-          out_next_.resize(patch_.number_of_halfedges(), no_face);
           out_next_[std::size_t(h[c])] = out_first_[a];
           out_first_[a] = std::uint32_t(h[c]);
           out_next_[std::size_t(o)] = out_first_[b];
@@ -740,6 +761,7 @@ private:
   std::vector<std::size_t> fan_root_;
   std::vector<vertex_descriptor> fan_vertex_;
   std::vector<std::uint32_t> out_first_, out_next_, border_out_;
+  std::vector<char> one_fan_;          // by mesh vertex: its faces are connected through edges around it
   std::vector<double> corner_degrees_; // by mesh face corner: angle (CGAL's formula)
   std::vector<double> angle_sum_;      // by patch vertex: sum of its corner angles in the patch, degrees
   std::vector<Event> events_;
