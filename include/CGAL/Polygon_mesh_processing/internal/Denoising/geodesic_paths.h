@@ -78,7 +78,8 @@ struct Geodesic_path_statistics
 //   consecutive faces are different.
 // - lengths: for each face, the length of the geodesic inside it.
 // - points: the polyline c_i, the points where it crosses an edge or passes
-//   through a vertex (each point once), c_j.
+//   through a vertex (each point once), c_j (empty if the solver does not
+//   collect them, see Geodesic_patch_solver::set_collect_points()).
 struct Geodesic_path
 {
   std::vector<std::uint32_t> faces;
@@ -409,6 +410,10 @@ public:
     return true;
   }
 
+  // Whether path_to() fills Geodesic_path::points (default true; the forest
+  // does not need them).
+  void set_collect_points(bool b) { points_ = b; }
+
   // The geodesic from c_i to c_j inside the patch. Returns false if j is not
   // in the patch or not reachable from c_i inside it, or if CGAL's answer is
   // not a plausible path (an exception, a distance that is negative, not
@@ -658,7 +663,8 @@ private:
     std::uint32_t current = events_.front().far_face; // face j
     double run = 0.;
     Vec3 last = events_.front().point;
-    out.points.push_back(last);
+    if(points_)
+      out.points.push_back(last);
     auto close = [&]() {
       if(current != no_face)
         portions_.emplace_back(current, run);
@@ -696,7 +702,8 @@ private:
         close();
       }
       last = e.point;
-      out.points.push_back(last);
+      if(points_)
+        out.points.push_back(last);
     }
     std::reverse(out.points.begin(), out.points.end());
     double total = 0.;
@@ -707,7 +714,7 @@ private:
     // points met twice (a crossing exactly at a vertex is reported once per
     // edge around it) are kept once
     const double touched = 1e-9 * total;
-    std::size_t kept = 1;
+    std::size_t kept = out.points.empty() ? 0 : 1;
     for(std::size_t k = 1; k < out.points.size(); ++k)
       if(norm(out.points[k] - out.points[kept - 1]) > touched || k + 1 == out.points.size())
         out.points[kept++] = out.points[k];
@@ -770,6 +777,7 @@ private:
   // built once on patch_, which it refers to; cleared and rebuilt per face
   Shortest_path shortest_path_{patch_};
   bool ready_ = false;
+  bool points_ = true;
 };
 
 // Step lengths along a geodesic path (eq. 4). Each face x of the path is
@@ -835,7 +843,10 @@ Path_forest geodesic_paths(const Flat_mesh& m, const Face_data& fd, const Csr& n
         std::unique_ptr<Geodesic_patch_solver> solver_ptr;
 #endif
         if(!solver_ptr)
+        {
           solver_ptr.reset(new Geodesic_patch_solver(m, fd, options.patch_rings));
+          solver_ptr->set_collect_points(false);
+        }
         Geodesic_patch_solver& solver = *solver_ptr;
         std::vector<Geodesic_path> paths;
         std::vector<char> reached;
