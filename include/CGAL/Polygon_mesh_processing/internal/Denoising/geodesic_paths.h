@@ -534,7 +534,7 @@ private:
     const std::size_t nf = global_.size();
     corner_.assign(3 * nf, 0);
     angle_sum_.clear();
-    patch_.resize(0, 0, 0); // keeps the capacity, unlike clear()
+    vertex_points_.clear();
     for(std::size_t k = 0; k < nf; ++k)
       for(int c = 0; c < 3; ++c)
       {
@@ -551,7 +551,8 @@ private:
           const std::size_t r = fan_find(a);
           if(fan_vertex_[r] == vertex_descriptor())
           {
-            fan_vertex_[r] = patch_.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
+            fan_vertex_[r] = vertex_descriptor(std::uint32_t(vertex_points_.size()));
+            vertex_points_.push_back(p);
             angle_sum_.push_back(0.);
           }
           const std::uint32_t g = fan_faces_[a];
@@ -561,16 +562,23 @@ private:
           angle_sum_[std::size_t(fan_vertex_[r])] += corner_degrees_[3 * g + cg];
         }
       }
+    // the elements are made by one resize of patch_'s arrays (in the memory
+    // of the previous patch), with room for 3 nf edges, cut down to the
+    // edges made at the end
+    const std::size_t nv = vertex_points_.size();
+    patch_.resize(0, 0, 0);
+    patch_.resize(nv, 3 * nf, nf);
+    for(std::size_t v = 0; v < nv; ++v)
+      patch_.point(vertex_descriptor(std::uint32_t(v))) =
+          Kernel::Point_3(vertex_points_[v][0], vertex_points_[v][1], vertex_points_[v][2]);
     // halfedges: out_first_[v] / out_next_[h] list the halfedges leaving v
-    const std::size_t nv = patch_.number_of_vertices();
     out_first_.assign(nv, no_face);
-    out_next_.assign(6 * nf, no_face); // at most 3 nf edges
+    out_next_.assign(6 * nf, no_face);
+    std::size_t ne = 0;
     const halfedge_descriptor null_h = Patch::null_halfedge();
     for(std::size_t k = 0; k < nf; ++k)
     {
-      const face_descriptor f = patch_.add_face();
-      if(std::size_t(f) != k)
-        return false;
+      const face_descriptor f = face_descriptor(std::uint32_t(k));
       std::array<halfedge_descriptor, 3> h;
       for(int c = 0; c < 3; ++c)
       {
@@ -586,7 +594,7 @@ private:
           }
         if(h[c] == null_h)
         {
-          h[c] = patch_.add_edge();
+          h[c] = halfedge_descriptor(std::uint32_t(2 * ne++));
           const halfedge_descriptor o = patch_.opposite(h[c]);
           patch_.set_target(h[c], vertex_descriptor(b));
           patch_.set_target(o, vertex_descriptor(a));
@@ -607,6 +615,7 @@ private:
       }
       patch_.set_halfedge(f, h[2]); // as Euler::add_face: the halfedge into the first corner
     }
+    patch_.resize(nv, ne, nf);
     // border halfedges: the next one leaves the vertex this one enters; a
     // border vertex refers to its incoming border halfedge
     border_out_.assign(nv, no_face);
@@ -771,6 +780,7 @@ private:
   std::vector<char> one_fan_;          // by mesh vertex: its faces are connected through edges around it
   std::vector<double> corner_degrees_; // by mesh face corner: angle (CGAL's formula)
   std::vector<double> angle_sum_;      // by patch vertex: sum of its corner angles in the patch, degrees
+  std::vector<Vec3> vertex_points_;    // by patch vertex
   std::vector<Event> events_;
   std::vector<std::pair<std::uint32_t, double>> portions_;
   Patch patch_;
