@@ -451,6 +451,158 @@ TEST(GeodesicPaths, UnreachableNeighbourFallsBackToTheDirectPath)
   }
 }
 
+TEST(GeodesicPaths, GeodesicsBendAroundTheReflexCornerOfAnLShapedPatch)
+{
+  // the L-shaped plane domain [0, 2]^2 minus (1, 2)^2, 4 x 4 cells per unit
+  // square; every face is a neighbour of every other, so the patch is the
+  // whole L. The shortest path between two centroids is the straight segment
+  // if it stays in the L, else the two segments through the reflex corner
+  // (1, 1): the border vertex there must stay a pseudo-source, while the
+  // convex corners (angle pi / 2) are not (see Geodesic_patch_mesh).
+  Soup s;
+  const int n = 4;
+  for(const auto& o : {P3{0., 0., 0.}, P3{1., 0., 0.}, P3{0., 1., 0.}})
+    s.add_subdivided_quad(o, {1., 0., 0.}, {0., 1., 0.}, n, n, false);
+  Flat f(flat_from_soup(s));
+  const std::uint32_t nf = std::uint32_t(f.mesh.number_of_faces());
+  ASSERT_EQ(nf, 3u * 2 * n * n);
+  std::vector<std::uint32_t> all(nf);
+  for(std::uint32_t k = 0; k < nf; ++k)
+    all[k] = k;
+  D::Geodesic_patch_solver solver(f.mesh, f.faces, 0);
+  D::Geodesic_path path;
+  const D::Vec3 corner = {1., 1., 0.};
+  std::size_t straight = 0, bent = 0;
+  for(std::uint32_t i = 0; i < nf; ++i)
+  {
+    ASSERT_TRUE(solver.set_source(i, all.begin(), all.end()));
+    for(std::uint32_t j = 0; j < nf; ++j)
+    {
+      if(j == i)
+        continue;
+      ASSERT_TRUE(solver.path_to(j, path)) << i << " -> " << j;
+      const D::Vec3 a = f.faces.centroids[i], b = f.faces.centroids[j];
+      // does the open segment a b meet the removed square (1, 2)^2? (clip it)
+      double t0 = 0., t1 = 1.;
+      for(int k = 0; k < 2; ++k)
+      {
+        const double d = b[k] - a[k];
+        if(d == 0.)
+        {
+          if(!(a[k] > 1.))
+            t1 = -1.;
+        }
+        else
+        {
+          const double t = (1. - a[k]) / d; // where the coordinate k is 1
+          if(d > 0.)
+            t0 = (std::max)(t0, t);
+          else
+            t1 = (std::min)(t1, t);
+        }
+      }
+      const bool around = t1 - t0 > 1e-12;
+      const double expected = around ? D::norm(corner - a) + D::norm(b - corner) : D::norm(b - a);
+      ASSERT_NEAR(path.length(), expected, 1e-12 * expected) << i << " -> " << j << (around ? " around" : "");
+      if(around)
+      {
+        EXPECT_GT(path.vertex_passages, 0u) << i << " -> " << j;
+        ++bent;
+      }
+      else
+        ++straight;
+    }
+  }
+  std::printf("L-shaped patch: %zu straight geodesics, %zu around the reflex corner\n", straight, bent);
+  EXPECT_GT(bent, 500u);
+  EXPECT_GT(straight, 2000u);
+}
+
+// Faces of a flat mesh grouped into the components connected through edges
+// (union-find over the shared edges).
+std::vector<std::size_t> edge_components(const D::Flat_mesh& m, std::size_t& count)
+{
+  const std::size_t nf = m.number_of_faces();
+  std::vector<std::size_t> root(nf);
+  for(std::size_t f = 0; f < nf; ++f)
+    root[f] = f;
+  auto find = [&](std::size_t x) {
+    while(root[x] != x)
+      x = root[x] = root[root[x]];
+    return x;
+  };
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> first_face;
+  for(std::size_t f = 0; f < nf; ++f)
+    for(int c = 0; c < 3; ++c)
+    {
+      const std::uint32_t a = m.triangles[f][c], b = m.triangles[f][(c + 1) % 3];
+      const auto key = std::make_pair((std::min)(a, b), (std::max)(a, b));
+      const auto it = first_face.find(key);
+      if(it == first_face.end())
+        first_face.emplace(key, f);
+      else
+        root[find(f)] = find(it->second);
+    }
+  count = 0;
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    root[f] = find(f);
+    count += root[f] == f;
+  }
+  return root;
+}
+
+TEST(GeodesicPaths, PrismWithNonMatchingCapSubdivisionFallsBackExactlyAcrossItsCracks)
+{
+  // hexagonal_prism(n_around, n_up, n_cap) splits each side of a cap's rim
+  // into n_cap segments and the matching bottom or top edge of a side into
+  // n_around: unless the two are equal, the caps and the sides share only
+  // the vertices where both subdivisions meet (T-junctions between them), so
+  // the mesh is three surfaces (two caps, one band of sides) touching at
+  // vertices. Neighbourhoods grow through shared vertices, but no geodesic
+  // on the surface goes from a cap to a side: exactly those neighbours get
+  // the direct fallback. This is the 7.9% of fallback paths of the
+  // benchmark's prism, hexagonal_prism(12, 40, 18).
+  for(int n_cap : {8, 6})
+  {
+    Mesh mesh = denoising_test::hexagonal_prism<Mesh>(8, 12, n_cap);
+    PMP::add_gaussian_noise(mesh, 0.1, CGAL::parameters::random_seed(1));
+    Flat f(mesh);
+    std::size_t ncomp = 0;
+    const std::vector<std::size_t> comp = edge_components(f.mesh, ncomp);
+    EXPECT_EQ(ncomp, n_cap == 8 ? 1u : 3u) << n_cap;
+    const D::Csr nb = f.neighbors(4.);
+    D::Geodesic_patch_solver solver(f.mesh, f.faces, D::Geodesic_path_options().patch_rings);
+    D::Geodesic_path path;
+    std::size_t across = 0;
+    for(std::uint32_t i = 0; i < f.mesh.number_of_faces(); ++i)
+    {
+      ASSERT_TRUE(solver.set_source(i, nb.items.begin() + nb.begin(i), nb.items.begin() + nb.end(i)));
+      for(std::uint32_t k = nb.begin(i); k < nb.end(i); ++k)
+      {
+        const std::uint32_t j = nb.items[k];
+        const bool same = comp[i] == comp[j];
+        across += !same;
+        ASSERT_EQ(solver.path_to(j, path), same) << "n_cap " << n_cap << ": " << i << " -> " << j;
+      }
+    }
+    D::Geodesic_path_statistics stats;
+    D::geodesic_paths<CGAL::Sequential_tag>(f.mesh, f.faces, nb, {}, &stats);
+    EXPECT_EQ(stats.fallbacks, across) << n_cap;
+    EXPECT_EQ(stats.failed_patches, 0u) << n_cap;
+    if(n_cap == 8)
+    {
+      EXPECT_EQ(stats.fallbacks, 0u);
+    }
+    else
+    {
+      EXPECT_GT(across, nb.items.size() / 20); // the case is exercised
+    }
+    std::printf("prism (8, 12, %d): %zu edge-connected components, %zu of %zu paths direct\n", n_cap, ncomp,
+                stats.fallbacks, stats.paths);
+  }
+}
+
 TEST(GeodesicPaths, ZeroAreaFaceIsLeftOutOfThePatchesAndGetsDirectPaths)
 {
   // a plane grid whose edge (a, b) is split by its midpoint m on one side,
