@@ -45,8 +45,9 @@ struct Face_vertex_adjacency
   }
 };
 
-// Calls f(w) for every vertex w joined to v by an edge.
-struct Vertex_edge_adjacency
+// Calls f(w) for every item w listed for item v in a CSR adjacency (the
+// vertices joined to v by an edge, the faces sharing a vertex with v...).
+struct Csr_adjacency
 {
   const Csr& adjacency;
   template <typename F>
@@ -56,6 +57,50 @@ struct Vertex_edge_adjacency
       fn(adjacency.items[k]);
   }
 };
+typedef Csr_adjacency Vertex_edge_adjacency; // over vertex_adjacency()
+
+// The faces sharing a vertex with each face (the face itself excluded), each
+// once: Face_vertex_adjacency without its repeats, for searches that visit
+// every face many times. The order of a list is that of the first visit.
+template <typename ConcurrencyTag>
+Csr face_face_adjacency(const Flat_mesh& m)
+{
+  const std::size_t nf = m.number_of_faces();
+  Csr csr;
+  csr.offsets.assign(nf + 1, 0);
+  // pass 0 counts, pass 1 writes; each face writes only its own slots
+  for(int pass = 0; pass < 2; ++pass)
+  {
+    if(pass == 1)
+    {
+      for(std::size_t f = 0; f < nf; ++f)
+        csr.offsets[f + 1] += csr.offsets[f];
+      csr.items.resize(csr.offsets[nf]);
+    }
+    for_each_chunk<ConcurrencyTag>(
+        nf,
+        [&](std::size_t fb, std::size_t fe) {
+          std::vector<std::uint32_t> list;
+          for(std::size_t f = fb; f < fe; ++f)
+          {
+            list.clear();
+            for(std::uint32_t v : m.triangles[f])
+              for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
+              {
+                const std::uint32_t g = m.vertex_faces[k];
+                if(g != f && std::find(list.begin(), list.end(), g) == list.end())
+                  list.push_back(g);
+              }
+            if(pass == 0)
+              csr.offsets[f + 1] = std::uint32_t(list.size());
+            else
+              std::copy(list.begin(), list.end(), csr.items.begin() + csr.offsets[f]);
+          }
+        },
+        4096);
+  }
+  return csr;
+}
 
 // The vertices joined to each vertex by an edge, in increasing order.
 inline Csr vertex_adjacency(const Flat_mesh& m)

@@ -166,7 +166,10 @@ Path_forest square_pattern_paths_within(const Flat_mesh& m, const Face_data& fd,
   };
   const std::size_t n = m.number_of_faces();
   const double r2 = radius * radius;
-  const Face_vertex_adjacency adjacent{m};
+  // the search reaches the same faces through either adjacency, and the
+  // trees do not depend on the order it reaches them (they are sorted)
+  const Csr face_faces = face_face_adjacency<ConcurrencyTag>(m);
+  const Csr_adjacency adjacent{face_faces};
   Path_forest forest;
   if(n < two_pass_min_faces)
   {
