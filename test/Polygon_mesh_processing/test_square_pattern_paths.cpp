@@ -298,3 +298,40 @@ TEST(SquarePattern, TwoPassConstructionGivesTheSameForest)
   EXPECT_EQ(parallel.parent, chunked.parent);
 #endif
 }
+
+// Renumbering the vertices after the faces: a permutation (not the identity
+// on fandisk), every face keeps its corners (as input vertices) and every
+// vertex its incident faces, and values go back to input order.
+TEST(SquarePattern, RenumberedVerticesKeepTheMesh)
+{
+  Mesh fandisk;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
+  D::Flat_mesh m = D::make_flat_mesh(fandisk, get(CGAL::vertex_point, fandisk), get(CGAL::vertex_index, fandisk),
+                                     get(CGAL::face_index, fandisk), "test");
+  D::Face_data fd;
+  D::compute_face_data<CGAL::Sequential_tag>(m, m.points, fd);
+  D::reorder_faces_for_locality<CGAL::Sequential_tag>(m, fd);
+  D::Flat_mesh r = m;
+  D::reorder_vertices_for_locality(r);
+  const std::size_t nv = m.number_of_vertices();
+  ASSERT_EQ(r.input_vertex.size(), nv);
+  std::vector<std::uint32_t> sorted = r.input_vertex;
+  std::sort(sorted.begin(), sorted.end());
+  std::size_t moved = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    ASSERT_EQ(sorted[v], v);
+    moved += r.input_vertex[v] != v ? 1 : 0;
+    EXPECT_EQ(r.points[v], m.points[r.input_vertex[v]]);
+    const std::uint32_t iv = r.input_vertex[v];
+    ASSERT_EQ(r.vertex_face_offsets[v + 1] - r.vertex_face_offsets[v],
+              m.vertex_face_offsets[iv + 1] - m.vertex_face_offsets[iv]);
+    for(std::uint32_t k = 0; k < r.vertex_face_offsets[v + 1] - r.vertex_face_offsets[v]; ++k)
+      EXPECT_EQ(r.vertex_faces[r.vertex_face_offsets[v] + k], m.vertex_faces[m.vertex_face_offsets[iv] + k]);
+  }
+  EXPECT_GT(moved, nv / 2);
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+    for(int k = 0; k < 3; ++k)
+      EXPECT_EQ(r.input_vertex[r.triangles[f][k]], m.triangles[f][k]);
+  EXPECT_EQ(r.vertex_values_in_input_order(r.points), m.points);
+}

@@ -373,7 +373,11 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
   report.maximum_iterations = iterations;
   const auto progress = choose_parameter(get_parameter(np, internal_np::progress_callback), D::No_progress());
 
-  const std::vector<char> fixed = maps.constrained(tmesh);
+  // the vertex update reads the vertices of nearby faces: number them as the
+  // (Morton-ordered) faces use them; the points go back in input order
+  if(!s.mesh.input_face.empty())
+    D::reorder_vertices_for_locality(s.mesh);
+  const std::vector<char> fixed = s.mesh.vertex_values_from_input_order(maps.constrained(tmesh));
   D::Fold_safeguard guard;
   guard.enabled = choose_parameter(get_parameter(np, internal_np::prevent_folds), true);
   const std::vector<D::Vec3> input_normals = guard.enabled ? s.input_faces.normals : std::vector<D::Vec3>();
@@ -414,7 +418,7 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
   }
   if(stop_rule)
     report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
-  maps.write_points(tmesh, points);
+  maps.write_points(tmesh, s.mesh.vertex_values_in_input_order(points));
   if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
     maps.write_face_vectors(tmesh, s.mesh.in_input_order(filtered), get_parameter(np, internal_np::face_normal));
   return report;

@@ -82,6 +82,7 @@ struct Flat_mesh
   std::vector<std::uint32_t> vertex_face_offsets;      // size nv + 1
   std::vector<std::uint32_t> vertex_faces;
   std::vector<std::uint32_t> input_face; // input index of each face; empty: the identity
+  std::vector<std::uint32_t> input_vertex; // input index of each vertex; empty: the identity
 
   std::size_t number_of_vertices() const { return points.size(); }
   std::size_t number_of_faces() const { return triangles.size(); }
@@ -95,6 +96,27 @@ struct Flat_mesh
     std::vector<T> out(values.size());
     for(std::size_t f = 0; f < values.size(); ++f)
       out[input_face[f]] = values[f];
+    return out;
+  }
+  // values by vertex index -> values by input vertex index, and back
+  template <typename T>
+  std::vector<T> vertex_values_in_input_order(const std::vector<T>& values) const
+  {
+    if(input_vertex.empty())
+      return values;
+    std::vector<T> out(values.size());
+    for(std::size_t v = 0; v < values.size(); ++v)
+      out[input_vertex[v]] = values[v];
+    return out;
+  }
+  template <typename T>
+  std::vector<T> vertex_values_from_input_order(const std::vector<T>& values) const
+  {
+    if(input_vertex.empty() || values.empty())
+      return values;
+    std::vector<T> out(values.size());
+    for(std::size_t v = 0; v < values.size(); ++v)
+      out[v] = values[input_vertex[v]];
     return out;
   }
 };
@@ -277,6 +299,48 @@ void reorder_faces_for_locality(Flat_mesh& m, Face_data& fd)
   permute(fd.centroids);
   for(std::uint32_t& f : m.vertex_faces)
     f = new_index[f];
+}
+
+// Renumbers the vertices in the order in which the faces (renumbered along
+// the Morton curve first) use them, so that the vertices of nearby faces
+// have nearby indices: the vertex update then reads memory mostly in
+// sequence. Vertices no face uses come last, in input order. Each face keeps
+// its corners in order and each vertex its incident faces in order, so every
+// per-vertex result is the same as without the renumbering; `input_vertex`
+// records the input index of every vertex.
+inline void reorder_vertices_for_locality(Flat_mesh& m)
+{
+  const std::size_t nv = m.number_of_vertices();
+  if(nv < 2 || !m.input_vertex.empty())
+    return;
+  const std::uint32_t unset = std::uint32_t(-1);
+  std::vector<std::uint32_t> new_index(nv, unset);
+  std::uint32_t next = 0;
+  for(const auto& t : m.triangles)
+    for(std::uint32_t v : t)
+      if(new_index[v] == unset)
+        new_index[v] = next++;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(new_index[v] == unset)
+      new_index[v] = next++;
+  m.input_vertex.resize(nv);
+  for(std::size_t v = 0; v < nv; ++v)
+    m.input_vertex[new_index[v]] = std::uint32_t(v);
+  m.points = m.vertex_values_from_input_order(m.points);
+  for(auto& t : m.triangles)
+    for(std::uint32_t& v : t)
+      v = new_index[v];
+  std::vector<std::uint32_t> offsets(nv + 1, 0), faces;
+  faces.reserve(m.vertex_faces.size());
+  for(std::size_t w = 0; w < nv; ++w)
+  {
+    const std::uint32_t v = m.input_vertex[w];
+    faces.insert(faces.end(), m.vertex_faces.begin() + m.vertex_face_offsets[v],
+                 m.vertex_faces.begin() + m.vertex_face_offsets[v + 1]);
+    offsets[w + 1] = std::uint32_t(faces.size());
+  }
+  m.vertex_face_offsets.swap(offsets);
+  m.vertex_faces.swap(faces);
 }
 
 // Area-weighted unit vertex normals (sum of the incident faces' cross
