@@ -229,9 +229,10 @@ TEST(SquarePattern, RenumberedFacesGiveTheSameTreesAndNormals)
 #endif
 }
 
-// The SSE2 kernel of the paper's case (n = m = 1) gives bitwise the filtered
-// normals of the generic engine, with and without the self term; and its
-// two-lane exp is bitwise the scalar one, down to the flush to 0.
+// The vector kernels of the paper's case (n = m = 1: SSE2, and AVX2 where
+// the processor has it) give bitwise the filtered normals of the generic
+// engine, with and without the self term; and their two- and four-lane exps
+// are bitwise the scalar one, down to the flush to 0.
 TEST(FilterPass, VectorKernelEqualsGenericEngine)
 {
   Mesh fandisk;
@@ -253,11 +254,30 @@ TEST(FilterPass, VectorKernelEqualsGenericEngine)
       std::vector<D::Vec3> fast, generic;
       D::intrinsic_filter_pass<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel, fast);
       D::intrinsic_filter_pass_generic<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel, generic);
-      ASSERT_EQ(fast.size(), generic.size());
-      std::size_t different = 0;
-      for(std::size_t f = 0; f < fast.size(); ++f)
-        different += fast[f] != generic[f] ? 1 : 0;
-      EXPECT_EQ(different, 0u) << "self " << self << " sigma " << sigma;
+      // each vector kernel on its own, whichever the dispatch picks
+      std::vector<std::pair<const char*, std::vector<D::Vec3>>> kernels;
+      kernels.emplace_back("dispatched", fast);
+#ifdef CGAL_PMP_DENOISING_SSE2
+      kernels.emplace_back("SSE2", std::vector<D::Vec3>(forest.number_of_faces()));
+      D::intrinsic_filter_pass_l1_sse2<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel,
+                                                            kernels.back().second);
+#endif
+#ifdef CGAL_PMP_DENOISING_AVX2
+      if(D::cpu_has_avx2())
+      {
+        kernels.emplace_back("AVX2", std::vector<D::Vec3>(forest.number_of_faces()));
+        D::intrinsic_filter_pass_l1_avx2<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel,
+                                                              kernels.back().second);
+      }
+#endif
+      for(const auto& k : kernels)
+      {
+        ASSERT_EQ(k.second.size(), generic.size());
+        std::size_t different = 0;
+        for(std::size_t f = 0; f < generic.size(); ++f)
+          different += k.second[f] != generic[f] ? 1 : 0;
+        EXPECT_EQ(different, 0u) << k.first << " self " << self << " sigma " << sigma;
+      }
     }
 #ifdef CGAL_PMP_DENOISING_SSE2
   const D::Exp_table& table = D::Exp_table::instance();
@@ -271,6 +291,22 @@ TEST(FilterPass, VectorKernelEqualsGenericEngine)
       tried += 2;
     }
   EXPECT_EQ(different, 0u) << "of " << tried;
+#endif
+#ifdef CGAL_PMP_DENOISING_AVX2
+  if(D::cpu_has_avx2())
+  {
+    std::size_t different4 = 0, tried4 = 0;
+    for(double x = -720.; x <= 0.; x += 0.0137)
+    {
+      const double in[4] = {x, x - 1e-9, std::nextafter(-707., 0.), x < -360. ? -1e300 : -0.};
+      double lanes[4];
+      D::exp_nonpositive_4(in, lanes, table);
+      for(int l = 0; l < 4; ++l)
+        different4 += lanes[l] != D::exp_nonpositive(in[l], table);
+      tried4 += 4;
+    }
+    EXPECT_EQ(different4, 0u) << "of " << tried4;
+  }
 #endif
 }
 

@@ -19,6 +19,14 @@
 #if defined(__SSE2__) && !defined(CGAL_PMP_DENOISING_NO_SIMD)
 #include <emmintrin.h>
 #define CGAL_PMP_DENOISING_SSE2 1
+// AVX2 variant of the SSE2 kernel, compiled for that target only (the rest
+// of the program keeps the compiler's flags) and chosen at run time when the
+// processor has AVX2. CGAL_PMP_DENOISING_NO_AVX2 turns it off.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(CGAL_PMP_DENOISING_NO_AVX2)
+#include <immintrin.h>
+#define CGAL_PMP_DENOISING_AVX2 1
+#define CGAL_PMP_DENOISING_AVX2_TARGET __attribute__((target("avx2")))
+#endif
 #endif
 
 namespace CGAL {
@@ -298,6 +306,151 @@ void intrinsic_filter_pass_l1_sse2(const Path_forest& forest, const std::vector<
 }
 #endif
 
+#ifdef CGAL_PMP_DENOISING_AVX2
+// Whether the processor runs AVX2 code (and the system saves its registers).
+inline bool cpu_has_avx2()
+{
+  static const bool has = __builtin_cpu_supports("avx2") != 0;
+  return has;
+}
+
+// exp_nonpositive_2 on four values: the same operations in the same order
+// (no fused multiply-add: the target does not include FMA), so each lane is
+// bitwise the scalar result.
+CGAL_PMP_DENOISING_AVX2_TARGET inline __m256d exp_nonpositive_4(__m256d x, const Exp_table& table)
+{
+  const __m256d shifter = _mm256_set1_pd(6755399441055744.0);
+  const __m256d low = _mm256_set1_pd(-707.);
+  const __m256d keep = _mm256_cmp_pd(x, low, _CMP_GT_OQ);
+  const __m256d xc = _mm256_blendv_pd(low, x, keep);
+  const double to_index = 64. / 6.93147180559945309417e-01;
+  const __m256d t = _mm256_add_pd(_mm256_mul_pd(xc, _mm256_set1_pd(to_index)), shifter);
+  const __m256d md = _mm256_sub_pd(t, shifter);
+  const __m256d r =
+      _mm256_sub_pd(_mm256_sub_pd(xc, _mm256_mul_pd(md, _mm256_set1_pd(6.93147180369123816490e-01 / 64.))),
+                    _mm256_mul_pd(md, _mm256_set1_pd(1.90821492927058770002e-10 / 64.)));
+  const __m256d r2 = _mm256_mul_pd(r, r);
+  const __m256d inner1 = _mm256_add_pd(_mm256_set1_pd(0.5), _mm256_mul_pd(r, _mm256_set1_pd(1. / 6.)));
+  const __m256d inner2 = _mm256_add_pd(_mm256_set1_pd(1. / 24.), _mm256_mul_pd(r, _mm256_set1_pd(1. / 120.)));
+  const __m256d poly = _mm256_add_pd(_mm256_add_pd(_mm256_set1_pd(1.), r),
+                                     _mm256_mul_pd(r2, _mm256_add_pd(inner1, _mm256_mul_pd(r2, inner2))));
+  const __m256i m = _mm256_sub_epi64(_mm256_castpd_si256(t), _mm256_set1_epi64x(0x4338000000000000ll));
+  const __m256d base =
+      _mm256_i64gather_pd(table.two_to_j_64, _mm256_and_si256(m, _mm256_set1_epi64x(63)), 8);
+  const __m256i k = _mm256_slli_epi64(_mm256_and_si256(m, _mm256_set1_epi64x(~std::int64_t(63))), 46);
+  const __m256d scale = _mm256_castsi256_pd(_mm256_add_epi64(_mm256_castpd_si256(base), k));
+  return _mm256_and_pd(keep, _mm256_mul_pd(poly, scale));
+}
+
+// exp_nonpositive_4 on x[0..3] into e[0..3] (for callers compiled without AVX2).
+CGAL_PMP_DENOISING_AVX2_TARGET inline void exp_nonpositive_4(const double* x, double* e, const Exp_table& table)
+{
+  _mm256_storeu_pd(e, exp_nonpositive_4(_mm256_loadu_pd(x), table));
+}
+
+// Faces [ib, ie) of the AVX2 kernel. The roots of two nodes (four values)
+// are taken by one instruction into `roots`, then added to the parents'
+// sums in tree order, so the roots do not wait for the sums; the weights are
+// computed four nodes at a time. The operations on each value are the SSE2
+// kernel's, in its order. Scratch: sums 2 (max_nodes + 4), roots
+// 2 (max_nodes + 2), weight max_nodes + 4 doubles.
+CGAL_PMP_DENOISING_AVX2_TARGET inline void intrinsic_filter_faces_l1_avx2(
+    const Path_forest& forest, const std::vector<Vec3>& normals, const std::vector<double>& areas, double a,
+    double b, bool include_self, std::size_t ib, std::size_t ie, double* sums, double* roots, double* weight,
+    std::vector<Vec3>& out)
+{
+  const Exp_table& table = Exp_table::instance();
+  const bool all_weighted = forest.weighted.empty();
+  const __m256d va = _mm256_set1_pd(a), vb = _mm256_set1_pd(b);
+  const __m256d sign = _mm256_set1_pd(-0.);
+  const Vec3* nrm = normals.data();
+  for(std::size_t i = ib; i < ie; ++i)
+  {
+    const std::uint32_t nb = forest.offsets[i], ne = forest.offsets[i + 1];
+    const std::uint32_t* face = forest.face.data() + nb;
+    const std::int32_t* parent = forest.parent.data() + nb;
+    const std::uint32_t count = ne - nb;
+    const Vec3& ni = nrm[i];
+    // lanes (step k, range k, step k+1, range k+1): the step is taken
+    // against the parent's normal, the range against the root's
+    const __m256d nix = _mm256_set1_pd(ni[0]), niy = _mm256_set1_pd(ni[1]), niz = _mm256_set1_pd(ni[2]);
+    std::uint32_t k = 0;
+    for(; k + 1 < count; k += 2)
+    {
+      const std::int32_t p0 = parent[k], p1 = parent[k + 1];
+      const Vec3& n0 = nrm[face[k]];
+      const Vec3& n1 = nrm[face[k + 1]];
+      const Vec3& f0 = nrm[p0 < 0 ? std::uint32_t(i) : face[p0]];
+      const Vec3& f1 = nrm[p1 < 0 ? std::uint32_t(i) : face[p1]];
+      const __m256d dx = _mm256_sub_pd(_mm256_set_pd(n1[0], n1[0], n0[0], n0[0]),
+                                       _mm256_blend_pd(nix, _mm256_set_pd(0., f1[0], 0., f0[0]), 0x5));
+      const __m256d dy = _mm256_sub_pd(_mm256_set_pd(n1[1], n1[1], n0[1], n0[1]),
+                                       _mm256_blend_pd(niy, _mm256_set_pd(0., f1[1], 0., f0[1]), 0x5));
+      const __m256d dz = _mm256_sub_pd(_mm256_set_pd(n1[2], n1[2], n0[2], n0[2]),
+                                       _mm256_blend_pd(niz, _mm256_set_pd(0., f1[2], 0., f0[2]), 0x5));
+      const __m256d sq = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+                                       _mm256_mul_pd(dz, dz));
+      _mm256_storeu_pd(roots + 2 * k, _mm256_sqrt_pd(sq));
+    }
+    if(k < count)
+    {
+      const std::int32_t p = parent[k];
+      const Vec3& nk = nrm[face[k]];
+      const Vec3& nf = nrm[p < 0 ? std::uint32_t(i) : face[p]];
+      const __m128d dx = _mm_sub_pd(_mm_set1_pd(nk[0]), _mm_set_pd(ni[0], nf[0]));
+      const __m128d dy = _mm_sub_pd(_mm_set1_pd(nk[1]), _mm_set_pd(ni[1], nf[1]));
+      const __m128d dz = _mm_sub_pd(_mm_set1_pd(nk[2]), _mm_set_pd(ni[2], nf[2]));
+      const __m128d sq = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
+      _mm_storeu_pd(roots + 2 * k, _mm_sqrt_pd(sq));
+    }
+    // sums[2 (k + 1)] = spatial sum of node k, sums[2 (k + 1) + 1] its range
+    // sum; slot 0 is the root's (0, 0)
+    for(k = 0; k < count; ++k)
+      _mm_storeu_pd(sums + 2 * (k + 1),
+                    _mm_add_pd(_mm_loadu_pd(sums + 2 * (parent[k] + 1)), _mm_loadu_pd(roots + 2 * k)));
+    // up to three spare nodes pad the count to a multiple of 4
+    for(k = count; k % 4 != 0; ++k)
+      _mm_storeu_pd(sums + 2 * (k + 1), _mm_setzero_pd());
+    for(k = 0; k < count; k += 4)
+    {
+      // (s k, r k, s k+1, r k+1) and (s k+2, r k+2, s k+3, r k+3)
+      const __m256d v0 = _mm256_loadu_pd(sums + 2 * (k + 1)), v1 = _mm256_loadu_pd(sums + 2 * (k + 3));
+      // (s k, s k+2, s k+1, s k+3) and the same for r
+      const __m256d sp = _mm256_unpacklo_pd(v0, v1), rg = _mm256_unpackhi_pd(v0, v1);
+      const __m256d x = _mm256_sub_pd(_mm256_mul_pd(_mm256_xor_pd(_mm256_mul_pd(sp, sp), sign), va),
+                                      _mm256_mul_pd(_mm256_mul_pd(rg, rg), vb));
+      _mm256_storeu_pd(weight + k, _mm256_permute4x64_pd(exp_nonpositive_4(x, table), 0xD8));
+    }
+    Vec3 sum = {0., 0., 0.};
+    if(include_self)
+      sum = areas[i] * ni;
+    for(k = 0; k < count; ++k)
+      if(all_weighted || forest.weighted[nb + k])
+      {
+        const std::uint32_t j = face[k];
+        sum = sum + (areas[j] * weight[k]) * nrm[j];
+      }
+    const double len = norm(sum);
+    out[i] = (len > 0. && std::isfinite(len)) ? (1. / len) * sum : ni;
+  }
+}
+
+template <typename ConcurrencyTag>
+void intrinsic_filter_pass_l1_avx2(const Path_forest& forest, const std::vector<Vec3>& normals,
+                                   const std::vector<double>& areas, const Intrinsic_kernel& kernel,
+                                   std::vector<Vec3>& out)
+{
+  const std::size_t max_nodes = forest.max_nodes_per_face();
+  const double a = 1. / (2. * kernel.sigma_spatial * kernel.sigma_spatial),
+               b = 1. / (2. * kernel.sigma_range * kernel.sigma_range);
+  for_each_chunk<ConcurrencyTag>(forest.number_of_faces(), [&](std::size_t ib, std::size_t ie) {
+    std::vector<double> sums(2 * (max_nodes + 4), 0.), roots(2 * (max_nodes + 2)), weight(max_nodes + 4);
+    intrinsic_filter_faces_l1_avx2(forest, normals, areas, a, b, kernel.include_self, ib, ie, sums.data(),
+                                   roots.data(), weight.data(), out);
+  });
+}
+#endif
+
 // One pass of eq. 8 on face normals: out[i] = normalised sum over the
 // weighted nodes j of face i's tree of A_j g(d^s) g(d^r) n_j (plus A_i n_i
 // with the self term). A face whose weighted sum vanishes (no neighbour, or
@@ -312,6 +465,13 @@ void intrinsic_filter_pass(const Path_forest& forest, const std::vector<Vec3>& n
   if(kernel.spatial_exponent == 1. && kernel.range_exponent == 1. && forest.step.empty())
   {
     out.resize(forest.number_of_faces());
+#ifdef CGAL_PMP_DENOISING_AVX2
+    if(cpu_has_avx2())
+    {
+      intrinsic_filter_pass_l1_avx2<ConcurrencyTag>(forest, normals, areas, kernel, out);
+      return;
+    }
+#endif
     intrinsic_filter_pass_l1_sse2<ConcurrencyTag>(forest, normals, areas, kernel, out);
     return;
   }
