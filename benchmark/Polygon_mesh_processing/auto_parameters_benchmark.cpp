@@ -87,7 +87,7 @@ static std::vector<Input> make_inputs(const std::string& only, const std::vector
       {"fandisk", "CAD", [](Mesh& m) { return load("fandisk.off", m); }, 0.3, 0.},
       {"fandisk", "CAD", [](Mesh& m) { return load("fandisk.off", m); }, 0.5, 0.2},
       {"octahedron", "synthetic CAD", [](Mesh& m) { m = denoising_test::graded_octahedron<Mesh>(17, 1.4); return true; }, 0.3, 0.},
-      {"prism", "synthetic CAD", [](Mesh& m) { m = denoising_test::hexagonal_prism<Mesh>(12, 40, 18); return true; }, 0.1, 0.},
+      {"prism", "synthetic CAD", [](Mesh& m) { m = denoising_test::benchmark_prism<Mesh>(); return true; }, 0.1, 0.},
       {"cube", "synthetic CAD", [](Mesh& m) { m = denoising_test::cube<Mesh>(24); return true; }, 0.2, 0.},
       {"turbine", "CAD", [](Mesh& m) { return load("turbine.off", m); }, 0.2, 0.},
       {"mech-holes-shark", "CAD", [](Mesh& m) { return load("mech-holes-shark.off", m); }, 0.3, 0.},

@@ -19,7 +19,7 @@
 // mean edge length, seed 1):
 //   octahedron: graded_octahedron(17, 1.4) (non-uniform sampling), sigma_E 0.3
 //   fandisk:    CGAL's meshes/fandisk.off, sigma_E 0.3
-//   prism:      hexagonal_prism(12, 40, 18) (18 edges), sigma_E 0.1
+//   prism:      benchmark_prism() (18 edges, 7776 faces), sigma_E 0.1
 //   bunny:      CGAL's meshes/bunny00.off, sigma_E 0.2
 // Single thread (Sequential_tag). The grids are listed in make_methods().
 
@@ -311,7 +311,7 @@ int main(int argc, char **argv)
   }
   if(selected(model_list, "prism"))
     models.push_back({"prism",
-                      denoising_test::hexagonal_prism<Mesh>(12, 40, 18),
+                      denoising_test::benchmark_prism<Mesh>(),
                       0.1,
                       false,
                       {4.98, 4.48, 3.29, 3.87, 0.71, 0.87, 0.46},
