@@ -59,49 +59,6 @@ struct Csr_adjacency
 };
 typedef Csr_adjacency Vertex_edge_adjacency; // over vertex_adjacency()
 
-// The faces sharing a vertex with each face (the face itself excluded), each
-// once: Face_vertex_adjacency without its repeats, for searches that visit
-// every face many times. The order of a list is that of the first visit.
-template <typename ConcurrencyTag>
-Csr face_face_adjacency(const Flat_mesh& m)
-{
-  const std::size_t nf = m.number_of_faces();
-  Csr csr;
-  csr.offsets.assign(nf + 1, 0);
-  // pass 0 counts, pass 1 writes; each face writes only its own slots
-  for(int pass = 0; pass < 2; ++pass)
-  {
-    if(pass == 1)
-    {
-      for(std::size_t f = 0; f < nf; ++f)
-        csr.offsets[f + 1] += csr.offsets[f];
-      csr.items.resize(csr.offsets[nf]);
-    }
-    for_each_chunk<ConcurrencyTag>(
-        nf,
-        [&](std::size_t fb, std::size_t fe) {
-          std::vector<std::uint32_t> list;
-          for(std::size_t f = fb; f < fe; ++f)
-          {
-            list.clear();
-            for(std::uint32_t v : m.triangles[f])
-              for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
-              {
-                const std::uint32_t g = m.vertex_faces[k];
-                if(g != f && std::find(list.begin(), list.end(), g) == list.end())
-                  list.push_back(g);
-              }
-            if(pass == 0)
-              csr.offsets[f + 1] = std::uint32_t(list.size());
-            else
-              std::copy(list.begin(), list.end(), csr.items.begin() + csr.offsets[f]);
-          }
-        },
-        4096);
-  }
-  return csr;
-}
-
 // The vertices joined to each vertex by an edge, in increasing order.
 inline Csr vertex_adjacency(const Flat_mesh& m)
 {
@@ -154,6 +111,58 @@ struct Neighborhood_search
         if(squared_norm(positions[g] - pi) <= r2)
           queue.push_back(g);
       });
+  }
+};
+
+// The geometric neighbourhood of a face, searched through the vertices: the
+// faces around each vertex of a face reached are tested once per vertex, not
+// once per face around it (about 40% fewer tests than going from face to
+// face over a face-to-face adjacency, and no adjacency to build). It reaches
+// exactly the faces Neighborhood_search::run reaches with
+// Face_vertex_adjacency (a face is tested as soon as it shares a vertex with
+// a face reached, and the test depends on its centroid only), in another
+// order. Afterwards queue = {i, neighbours}.
+struct Face_fan_search
+{
+  std::vector<std::uint32_t> face_stamp, vertex_stamp;
+  std::vector<std::uint32_t> queue; // room for every face: written without bounds checks
+  std::size_t count = 0;            // queue[0 .. count): {i, neighbours}
+
+  explicit Face_fan_search(const Flat_mesh& m)
+    : face_stamp(m.number_of_faces(), std::uint32_t(-1)), vertex_stamp(m.number_of_vertices(), std::uint32_t(-1)),
+      queue(m.number_of_faces() + 1)
+  {
+  }
+
+  const std::uint32_t* neighbors_begin() const { return queue.data() + 1; }
+  const std::uint32_t* neighbors_end() const { return queue.data() + count; }
+
+  void run(std::size_t i, const Flat_mesh& m, const std::vector<Vec3>& centroids, double r2)
+  {
+    const Vec3& ci = centroids[i];
+    const std::uint32_t mark = std::uint32_t(i);
+    std::uint32_t* q_out = queue.data();
+    q_out[0] = mark;
+    count = 1;
+    face_stamp[i] = mark;
+    for(std::size_t q = 0; q < count; ++q)
+      for(std::uint32_t v : m.triangles[q_out[q]])
+      {
+        if(vertex_stamp[v] == mark)
+          continue;
+        vertex_stamp[v] = mark;
+        // branch-free: whether a face is new and within the radius is
+        // unpredictable, so it is written anyway and counted only if both
+        for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
+        {
+          const std::uint32_t g = m.vertex_faces[k];
+          const bool fresh = face_stamp[g] != mark;
+          face_stamp[g] = mark;
+          const bool within = squared_norm(centroids[g] - ci) <= r2;
+          q_out[count] = g;
+          count += std::size_t(fresh & within);
+        }
+      }
   }
 };
 

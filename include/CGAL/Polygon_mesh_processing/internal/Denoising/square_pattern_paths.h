@@ -53,36 +53,56 @@ inline int areal_region(double l0, double l1, double l2)
   }
 }
 
-// Areal coordinates of the projection of p on the plane of triangle (a, b, c)
-// with unit normal n. Returns false if the triangle is degenerate.
-inline bool projected_areal_coordinates(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n,
-                                        const Vec3& p, std::array<double, 3>& l)
+// Face i's frame for the regions of its neighbours (its corners, its normal
+// and twice its area, computed once per face): region(p) takes the areal
+// coordinates of the projection of p on the plane of face i. Projecting p
+// along the unit normal n changes none of the signed areas below (each is a
+// determinant with n), so the projection is implicit.
+struct Square_pattern_frame
 {
-  const double twice_area = dot(cross(b - a, c - a), n);
-  if(!(twice_area > 0.))
-    return false;
-  // Projecting p along n changes none of these signed areas: each is a
-  // determinant with n, so the projection is implicit.
-  l[0] = dot(cross(b - p, c - p), n) / twice_area;
-  l[1] = dot(cross(c - p, a - p), n) / twice_area;
-  l[2] = 1. - l[0] - l[1];
-  return true;
-}
+  Vec3 a, b, c, n;
+  double twice_area = 0.;
+  bool degenerate = true; // zero normal or area: every neighbour in region 0
+  double reach2 = 0.;     // squared distance from c_i to its farthest corner
 
-// The region (0..5) of neighbour j around face i in its square pattern, or
-// -1 if j's projected centroid falls inside face i (dropped, NOTES 6). A
-// degenerate face i (zero normal, `degenerate`) or a failed projection puts
-// every neighbour in region 0.
-inline int square_pattern_region(const Flat_mesh& m, const Face_data& fd, std::size_t i, bool degenerate,
-                                 std::uint32_t j)
-{
-  const auto& t = m.triangles[i];
-  std::array<double, 3> l;
-  if(degenerate ||
-     !projected_areal_coordinates(m.points[t[0]], m.points[t[1]], m.points[t[2]], fd.normals[i], fd.centroids[j], l))
-    return 0;
-  return areal_region(l[0], l[1], l[2]);
-}
+  Square_pattern_frame(const Flat_mesh& m, const Face_data& fd, std::size_t i)
+  {
+    const auto& t = m.triangles[i];
+    a = m.points[t[0]];
+    b = m.points[t[1]];
+    c = m.points[t[2]];
+    n = fd.normals[i];
+    twice_area = dot(cross(b - a, c - a), n);
+    degenerate = squared_norm(n) == 0. || !(twice_area > 0.);
+    const Vec3& ci = fd.centroids[i];
+    reach2 = (std::max)((std::max)(squared_norm(a - ci), squared_norm(b - ci)), squared_norm(c - ci));
+  }
+
+  // The region (0..5) of a neighbour with centroid p, or -1 if p projects
+  // inside face i or on its border (dropped, NOTES 6). A degenerate face i
+  // puts every neighbour in region 0.
+  int region(const Vec3& p) const
+  {
+    if(degenerate)
+      return 0;
+    const double l0 = dot(cross(b - p, c - p), n) / twice_area;
+    const double l1 = dot(cross(c - p, a - p), n) / twice_area;
+    return areal_region(l0, l1, 1. - l0 - l1);
+  }
+
+  // Whether region(p) is certainly not -1, without computing it: face i lies
+  // in the disk of radius sqrt(reach2) around c_i in its plane, so a point
+  // whose projection is farther from c_i than that (by a relative margin far
+  // above the rounding errors) projects outside face i.
+  bool certainly_outside(const Vec3& p, const Vec3& ci) const
+  {
+    if(degenerate)
+      return true;
+    const Vec3 d = p - ci;
+    const double h = dot(d, n);
+    return squared_norm(d) - h * h > 1.0001 * reach2;
+  }
+};
 
 // (distance, input index, face): ties in distance are broken by the input
 // index, so renumbered faces (Flat_mesh::input_face) get the same trees
@@ -101,12 +121,12 @@ inline void square_pattern_tree(const Flat_mesh& m, const Face_data& fd, std::si
     r.clear();
   const std::size_t item_begin = out.size(); // parents are local to the item's nodes
   const Vec3& ci = fd.centroids[i];
-  const Vec3& ni = fd.normals[i];
-  const bool degenerate = squared_norm(ni) == 0.;
+  const bool degenerate = squared_norm(fd.normals[i]) == 0.;
+  const Square_pattern_frame frame(m, fd, i);
   for(; nb != nb_end; ++nb)
   {
     const std::uint32_t j = *nb;
-    const int r = square_pattern_region(m, fd, i, degenerate, j);
+    const int r = frame.region(fd.centroids[j]);
     if(r >= 0)
       regions[r].emplace_back(squared_norm(fd.centroids[j] - ci), m.input_index(j), j);
   }
@@ -160,25 +180,22 @@ Path_forest square_pattern_paths_within(const Flat_mesh& m, const Face_data& fd,
 {
   struct Scratch
   {
-    Neighborhood_search search;
+    Face_fan_search search;
     Square_pattern_regions regions;
     std::vector<Path_node> nodes;
   };
   const std::size_t n = m.number_of_faces();
   const double r2 = radius * radius;
-  // the search reaches the same faces through either adjacency, and the
-  // trees do not depend on the order it reaches them (they are sorted)
-  const Csr face_faces = face_face_adjacency<ConcurrencyTag>(m);
-  const Csr_adjacency adjacent{face_faces};
+  // the search reaches the faces geometric_neighborhoods() lists, in another
+  // order; the trees do not depend on the order (they are sorted)
   Path_forest forest;
   if(n < two_pass_min_faces)
   {
     build_lists<ConcurrencyTag, Path_node>(
-        n, forest.offsets, [n] { return Scratch{Neighborhood_search(n), {}, {}}; },
+        n, forest.offsets, [&m] { return Scratch{Face_fan_search(m), {}, {}}; },
         [&](std::size_t i, Scratch& s, std::vector<Path_node>& out) {
-          s.search.run(i, fd.centroids, adjacent, r2);
-          square_pattern_tree(m, fd, i, s.search.queue.data() + 1, s.search.queue.data() + s.search.queue.size(),
-                              s.regions, out);
+          s.search.run(i, m, fd.centroids, r2);
+          square_pattern_tree(m, fd, i, s.search.neighbors_begin(), s.search.neighbors_end(), s.regions, out);
         },
         [&forest](const std::vector<Path_node>& chunk) { forest.append_nodes(chunk); });
     return forest;
@@ -189,14 +206,18 @@ Path_forest square_pattern_paths_within(const Flat_mesh& m, const Face_data& fd,
   for_each_chunk<ConcurrencyTag>(
       n,
       [&](std::size_t b, std::size_t e) {
-        Neighborhood_search search(n);
+        Face_fan_search search(m);
         for(std::size_t i = b; i < e; ++i)
         {
-          search.run(i, fd.centroids, adjacent, r2);
-          const bool degenerate = squared_norm(fd.normals[i]) == 0.;
+          search.run(i, m, fd.centroids, r2);
+          const Square_pattern_frame frame(m, fd, i);
+          const Vec3& ci = fd.centroids[i];
           std::uint32_t count = 0;
-          for(std::size_t q = 1; q < search.queue.size(); ++q)
-            count += square_pattern_region(m, fd, i, degenerate, search.queue[q]) >= 0 ? 1 : 0;
+          for(const std::uint32_t* q = search.neighbors_begin(); q != search.neighbors_end(); ++q)
+          {
+            const Vec3& p = fd.centroids[*q];
+            count += frame.certainly_outside(p, ci) || frame.region(p) >= 0 ? 1 : 0;
+          }
           forest.offsets[i + 1] = count;
         }
       },
@@ -212,13 +233,12 @@ Path_forest square_pattern_paths_within(const Flat_mesh& m, const Face_data& fd,
   for_each_chunk<ConcurrencyTag>(
       n,
       [&](std::size_t b, std::size_t e) {
-        Scratch s{Neighborhood_search(n), {}, {}};
+        Scratch s{Face_fan_search(m), {}, {}};
         for(std::size_t i = b; i < e; ++i)
         {
-          s.search.run(i, fd.centroids, adjacent, r2);
+          s.search.run(i, m, fd.centroids, r2);
           s.nodes.clear();
-          square_pattern_tree(m, fd, i, s.search.queue.data() + 1, s.search.queue.data() + s.search.queue.size(),
-                              s.regions, s.nodes);
+          square_pattern_tree(m, fd, i, s.search.neighbors_begin(), s.search.neighbors_end(), s.regions, s.nodes);
           if(s.nodes.size() != forest.offsets[i + 1] - forest.offsets[i]) // both passes classify alike
             throw std::logic_error("square_pattern_paths_within: the two passes disagree");
           for(std::size_t k = 0; k < s.nodes.size(); ++k)
