@@ -179,6 +179,28 @@ void intrinsic_weights_pass(const Path_forest& forest, const Intrinsic_kernel& k
   });
 }
 
+// Eq. 8's average for face i: the normalised sum over the weighted nodes
+// [b, e) of its tree (weights w[0 .. e - b)) of A_j w n_j, plus A_i n_i with
+// the self term. A face whose sum vanishes (no neighbour, or weights that
+// cancel) keeps its normal. Every filter pass on face normals ends with it.
+inline Vec3 weighted_normal_average(const Path_forest& forest, std::size_t i, std::uint32_t b, std::uint32_t e,
+                                    const double* w, const std::vector<Vec3>& normals,
+                                    const std::vector<double>& areas, bool include_self)
+{
+  Vec3 sum = {0., 0., 0.};
+  if(include_self)
+    sum = areas[i] * normals[i];
+  const bool all_weighted = forest.weighted.empty();
+  for(std::uint32_t k = b; k < e; ++k)
+    if(all_weighted || forest.weighted[k])
+    {
+      const std::uint32_t j = forest.face[k];
+      sum = sum + (areas[j] * w[k - b]) * normals[j];
+    }
+  const double len = norm(sum);
+  return (len > 0. && std::isfinite(len)) ? (1. / len) * sum : normals[i];
+}
+
 // One pass of eq. 8 on face normals, through the generic engine: the engine with phi = psi = J = n and the
 // face areas as measure. out[i] = normalised sum over the weighted nodes j of
 // face i's tree of A_j g(d^s) g(d^r) n_j (plus A_i n_i with the self term). A
@@ -194,18 +216,7 @@ void intrinsic_filter_pass_generic(const Path_forest& forest, const std::vector<
   intrinsic_weights_pass<ConcurrencyTag>(
       forest, kernel, normal_sq, normal_sq,
       [&](std::size_t i, std::uint32_t b, std::uint32_t e, const double* w) {
-        Vec3 sum = {0., 0., 0.};
-        if(kernel.include_self)
-          sum = areas[i] * normals[i];
-        const bool all_weighted = forest.weighted.empty();
-        for(std::uint32_t k = b; k < e; ++k)
-          if(all_weighted || forest.weighted[k])
-          {
-            const std::uint32_t j = forest.face[k];
-            sum = sum + (areas[j] * w[k - b]) * normals[j];
-          }
-        const double len = norm(sum);
-        out[i] = (len > 0. && std::isfinite(len)) ? (1. / len) * sum : normals[i];
+        out[i] = weighted_normal_average(forest, i, b, e, w, normals, areas, kernel.include_self);
       });
 }
 
@@ -253,7 +264,6 @@ void intrinsic_filter_pass_l1_sse2(const Path_forest& forest, const std::vector<
   const double a = 1. / (2. * kernel.sigma_spatial * kernel.sigma_spatial),
                b = 1. / (2. * kernel.sigma_range * kernel.sigma_range);
   const Exp_table& table = Exp_table::instance();
-  const bool all_weighted = forest.weighted.empty();
   for_each_chunk<ConcurrencyTag>(n, [&](std::size_t ib, std::size_t ie) {
     // sums[2 (k + 1)] = spatial sum of node k, sums[2 (k + 1) + 1] its range
     // sum; slot 0 is the root's (0, 0); one spare node pads an odd count
@@ -290,17 +300,7 @@ void intrinsic_filter_pass_l1_sse2(const Path_forest& forest, const std::vector<
         const __m128d x = _mm_sub_pd(_mm_mul_pd(_mm_xor_pd(_mm_mul_pd(sp, sp), sign), va), _mm_mul_pd(_mm_mul_pd(rg, rg), vb));
         _mm_storeu_pd(weight.data() + k, exp_nonpositive_2(x, table));
       }
-      Vec3 sum = {0., 0., 0.};
-      if(kernel.include_self)
-        sum = areas[i] * ni;
-      for(std::uint32_t k = 0; k < count; ++k)
-        if(all_weighted || forest.weighted[nb + k])
-        {
-          const std::uint32_t j = face[k];
-          sum = sum + (areas[j] * weight[k]) * normals[j];
-        }
-      const double len = norm(sum);
-      out[i] = (len > 0. && std::isfinite(len)) ? (1. / len) * sum : ni;
+      out[i] = weighted_normal_average(forest, i, nb, ne, weight.data(), normals, areas, kernel.include_self);
     }
   });
 }
@@ -360,7 +360,6 @@ CGAL_PMP_DENOISING_AVX2_TARGET inline void intrinsic_filter_faces_l1_avx2(
     std::vector<Vec3>& out)
 {
   const Exp_table& table = Exp_table::instance();
-  const bool all_weighted = forest.weighted.empty();
   const __m256d va = _mm256_set1_pd(a), vb = _mm256_set1_pd(b);
   const __m256d sign = _mm256_set1_pd(-0.);
   const Vec3* nrm = normals.data();
@@ -421,17 +420,7 @@ CGAL_PMP_DENOISING_AVX2_TARGET inline void intrinsic_filter_faces_l1_avx2(
                                       _mm256_mul_pd(_mm256_mul_pd(rg, rg), vb));
       _mm256_storeu_pd(weight + k, _mm256_permute4x64_pd(exp_nonpositive_4(x, table), 0xD8));
     }
-    Vec3 sum = {0., 0., 0.};
-    if(include_self)
-      sum = areas[i] * ni;
-    for(k = 0; k < count; ++k)
-      if(all_weighted || forest.weighted[nb + k])
-      {
-        const std::uint32_t j = face[k];
-        sum = sum + (areas[j] * weight[k]) * nrm[j];
-      }
-    const double len = norm(sum);
-    out[i] = (len > 0. && std::isfinite(len)) ? (1. / len) * sum : ni;
+    out[i] = weighted_normal_average(forest, i, nb, ne, weight, normals, areas, include_self);
   }
 }
 
