@@ -19,6 +19,23 @@ namespace D = CGAL::Polygon_mesh_processing::internal::Denoising;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
+// A mesh as the denoiser sees it before the paths: its flat copy, the face
+// data and the paper's radius r = 4d.
+template <typename Tag = CGAL::Sequential_tag>
+struct Flat_setup
+{
+  D::Flat_mesh m;
+  D::Face_data fd;
+  double r = 0.;
+  explicit Flat_setup(const Mesh& mesh)
+    : m(D::make_flat_mesh(mesh, get(CGAL::vertex_point, mesh), get(CGAL::vertex_index, mesh),
+                          get(CGAL::face_index, mesh), "test"))
+  {
+    D::compute_face_data<Tag>(m, m.points, fd);
+    r = 4. * D::mean_adjacent_centroid_distance(m, fd);
+  }
+};
+
 TEST(SquarePattern, ParentRanksFollowThePaper)
 {
   // node 1 hangs from face i (rank 0); 2..4 from 1; 5..9 from 4; 10..16 from 9
@@ -178,11 +195,10 @@ TEST(SquarePattern, FandiskForestIsWellFormed)
 template <typename Tag>
 static void expect_renumbering_changes_nothing(const Mesh& mesh)
 {
-  D::Flat_mesh m = D::make_flat_mesh(mesh, get(CGAL::vertex_point, mesh), get(CGAL::vertex_index, mesh),
-                                     get(CGAL::face_index, mesh), "test");
-  D::Face_data fd;
-  D::compute_face_data<Tag>(m, m.points, fd);
-  const double r = 4. * D::mean_adjacent_centroid_distance(m, fd);
+  const Flat_setup<Tag> setup(mesh);
+  const D::Flat_mesh& m = setup.m;
+  const D::Face_data& fd = setup.fd;
+  const double r = setup.r;
   const D::Path_forest plain = D::square_pattern_paths<Tag>(m, fd, D::geometric_neighborhoods<Tag>(m, fd.centroids, r));
 
   D::Flat_mesh rm = m;
@@ -238,12 +254,9 @@ TEST(FilterPass, VectorKernelEqualsGenericEngine)
   Mesh fandisk;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
   CGAL::Polygon_mesh_processing::add_gaussian_noise(fandisk, 0.3, CGAL::parameters::random_seed(5));
-  D::Flat_mesh m = D::make_flat_mesh(fandisk, get(CGAL::vertex_point, fandisk), get(CGAL::vertex_index, fandisk),
-                                     get(CGAL::face_index, fandisk), "test");
-  D::Face_data fd;
-  D::compute_face_data<CGAL::Sequential_tag>(m, m.points, fd);
-  const double r = 4. * D::mean_adjacent_centroid_distance(m, fd);
-  const D::Path_forest forest = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r);
+  const Flat_setup<> setup(fandisk);
+  const D::Face_data& fd = setup.fd;
+  const D::Path_forest forest = D::square_pattern_paths_within<CGAL::Sequential_tag>(setup.m, fd, setup.r);
   for(bool self : {false, true})
     for(double sigma : {0.2, 0.4, 1.3})
     {
@@ -317,11 +330,10 @@ TEST(SquarePattern, TwoPassConstructionGivesTheSameForest)
   Mesh fandisk;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
   CGAL::Polygon_mesh_processing::add_gaussian_noise(fandisk, 0.3, CGAL::parameters::random_seed(7));
-  D::Flat_mesh m = D::make_flat_mesh(fandisk, get(CGAL::vertex_point, fandisk), get(CGAL::vertex_index, fandisk),
-                                     get(CGAL::face_index, fandisk), "test");
-  D::Face_data fd;
-  D::compute_face_data<CGAL::Sequential_tag>(m, m.points, fd);
-  const double r = 4. * D::mean_adjacent_centroid_distance(m, fd);
+  const Flat_setup<> setup(fandisk);
+  const D::Flat_mesh& m = setup.m;
+  const D::Face_data& fd = setup.fd;
+  const double r = setup.r;
   const D::Path_forest chunked = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r);
   const D::Path_forest two_pass = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r, 0);
   EXPECT_EQ(two_pass.offsets, chunked.offsets);
@@ -342,11 +354,9 @@ TEST(SquarePattern, RenumberedVerticesKeepTheMesh)
 {
   Mesh fandisk;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
-  D::Flat_mesh m = D::make_flat_mesh(fandisk, get(CGAL::vertex_point, fandisk), get(CGAL::vertex_index, fandisk),
-                                     get(CGAL::face_index, fandisk), "test");
-  D::Face_data fd;
-  D::compute_face_data<CGAL::Sequential_tag>(m, m.points, fd);
-  D::reorder_faces_for_locality<CGAL::Sequential_tag>(m, fd);
+  Flat_setup<> setup(fandisk);
+  D::Flat_mesh& m = setup.m;
+  D::reorder_faces_for_locality<CGAL::Sequential_tag>(m, setup.fd);
   D::Flat_mesh r = m;
   D::reorder_vertices_for_locality(r);
   const std::size_t nv = m.number_of_vertices();

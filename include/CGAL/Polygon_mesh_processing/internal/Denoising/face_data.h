@@ -70,6 +70,31 @@ inline double mean_angle_degrees(const std::vector<Vec3>& a, const std::vector<V
   return sum / double(a.size()) * (180. / 3.14159265358979323846);
 }
 
+// The two directions of a renumbering, `index` giving the input index of
+// each element (empty: the identity, and `values` is returned as it is):
+// scattered() takes values by element to values by input index,
+// gathered() values by input index to values by element.
+template <typename T>
+std::vector<T> scattered(const std::vector<T>& values, const std::vector<std::uint32_t>& index)
+{
+  if(index.empty())
+    return values;
+  std::vector<T> out(values.size());
+  for(std::size_t k = 0; k < values.size(); ++k)
+    out[index[k]] = values[k];
+  return out;
+}
+template <typename T>
+std::vector<T> gathered(const std::vector<T>& values, const std::vector<std::uint32_t>& index)
+{
+  if(index.empty() || values.empty())
+    return values;
+  std::vector<T> out(index.size());
+  for(std::size_t k = 0; k < index.size(); ++k)
+    out[k] = values[index[k]];
+  return out;
+}
+
 // A triangle mesh as arrays: vertex positions and, per face, its three vertex
 // indices in the face's orientation; plus vertex -> incident faces in CSR form.
 // The faces may be renumbered for memory locality (reorder_faces_for_locality);
@@ -91,33 +116,18 @@ struct Flat_mesh
   template <typename T>
   std::vector<T> in_input_order(const std::vector<T>& values) const
   {
-    if(input_face.empty())
-      return values;
-    std::vector<T> out(values.size());
-    for(std::size_t f = 0; f < values.size(); ++f)
-      out[input_face[f]] = values[f];
-    return out;
+    return scattered(values, input_face);
   }
   // values by vertex index -> values by input vertex index, and back
   template <typename T>
   std::vector<T> vertex_values_in_input_order(const std::vector<T>& values) const
   {
-    if(input_vertex.empty())
-      return values;
-    std::vector<T> out(values.size());
-    for(std::size_t v = 0; v < values.size(); ++v)
-      out[input_vertex[v]] = values[v];
-    return out;
+    return scattered(values, input_vertex);
   }
   template <typename T>
   std::vector<T> vertex_values_from_input_order(const std::vector<T>& values) const
   {
-    if(input_vertex.empty() || values.empty())
-      return values;
-    std::vector<T> out(values.size());
-    for(std::size_t v = 0; v < values.size(); ++v)
-      out[v] = values[input_vertex[v]];
-    return out;
+    return gathered(values, input_vertex);
   }
 };
 
@@ -287,16 +297,10 @@ void reorder_faces_for_locality(Flat_mesh& m, Face_data& fd)
     new_index[keys[f].second] = std::uint32_t(f);
   }
   std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(keys);
-  auto permute = [&](auto& values) {
-    std::remove_reference_t<decltype(values)> out(values.size());
-    for(std::size_t f = 0; f < nf; ++f)
-      out[f] = values[m.input_face[f]];
-    values.swap(out);
-  };
-  permute(m.triangles);
-  permute(fd.normals);
-  permute(fd.areas);
-  permute(fd.centroids);
+  m.triangles = gathered(m.triangles, m.input_face);
+  fd.normals = gathered(fd.normals, m.input_face);
+  fd.areas = gathered(fd.areas, m.input_face);
+  fd.centroids = gathered(fd.centroids, m.input_face);
   for(std::uint32_t& f : m.vertex_faces)
     f = new_index[f];
 }
