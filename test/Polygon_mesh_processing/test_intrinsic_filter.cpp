@@ -247,6 +247,7 @@ void reference_pass(const D::Path_forest& forest, const std::vector<D::Vec3>& n,
                     const D::Intrinsic_kernel& kernel, std::vector<D::Vec3>& out)
 {
   out.resize(n.size());
+  const std::vector<std::int32_t> parent = D::all_parents(forest);
   for(std::size_t i = 0; i < n.size(); ++i)
   {
     const std::uint32_t b = forest.offsets[i], e = forest.offsets[i + 1];
@@ -254,7 +255,7 @@ void reference_pass(const D::Path_forest& forest, const std::vector<D::Vec3>& n,
     D::Vec3 sum = {0., 0., 0.};
     for(std::uint32_t k = b; k < e; ++k)
     {
-      const std::int32_t p = forest.parent[k];
+      const std::int32_t p = parent[k];
       const D::Vec3& np = p < 0 ? n[i] : n[forest.face[b + p]];
       const D::Vec3& nk = n[forest.face[k]];
       S[k - b] = (p < 0 ? 0. : S[p]) + std::sqrt(D::squared_norm(nk - np));

@@ -12,8 +12,12 @@
 #include "synthetic_meshes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace D = CGAL::Polygon_mesh_processing::internal::Denoising;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -115,6 +119,7 @@ TEST(SquarePattern, HandBuiltNeighbourhoodGivesRegionsOrderAndParents)
   };
   Hand_built h(centroids);
   const D::Path_forest forest = D::square_pattern_paths(h.mesh, h.faces, h.neighbors);
+  const std::vector<std::int32_t> parent = D::all_parents(forest);
   const std::uint32_t b = forest.offsets[0], e = forest.offsets[1];
   ASSERT_EQ(e - b, 7u); // 8 neighbours, one dropped
   // locate region A's run: the nodes whose face is one of {2,5,1,6,4,7}
@@ -129,7 +134,7 @@ TEST(SquarePattern, HandBuiltNeighbourhoodGivesRegionsOrderAndParents)
   const std::vector<int> expected_parent_rank = {0, 1, 1, 1, 4, 4};
   for(int k = 0; k < 6; ++k)
   {
-    const std::int32_t p = forest.parent[b + pos + k];
+    const std::int32_t p = parent[b + pos + k];
     if(expected_parent_rank[k] == 0)
       EXPECT_EQ(p, D::Path_forest::root) << "rank " << k + 1;
     else
@@ -138,7 +143,7 @@ TEST(SquarePattern, HandBuiltNeighbourhoodGivesRegionsOrderAndParents)
   // the lone neighbour of the other region hangs from face 0
   auto other = std::find(faces.begin(), faces.end(), 8u) - faces.begin();
   ASSERT_LT(other, std::ptrdiff_t(faces.size()));
-  EXPECT_EQ(forest.parent[b + other], D::Path_forest::root);
+  EXPECT_EQ(parent[b + other], D::Path_forest::root);
 }
 
 TEST(SquarePattern, DegenerateFaceFallsBackToDirectPaths)
@@ -147,10 +152,15 @@ TEST(SquarePattern, DegenerateFaceFallsBackToDirectPaths)
   h.mesh.points[2] = {2., 0., 0.}; // face 0 becomes a zero-area (collinear) triangle
   D::compute_face_data<CGAL::Sequential_tag>(h.mesh, h.mesh.points, h.faces);
   ASSERT_EQ(D::squared_norm(h.faces.normals[0]), 0.);
-  const D::Path_forest forest = D::square_pattern_paths(h.mesh, h.faces, h.neighbors);
-  ASSERT_EQ(forest.offsets[1] - forest.offsets[0], 3u);
-  for(std::uint32_t k = forest.offsets[0]; k < forest.offsets[1]; ++k)
-    EXPECT_EQ(forest.parent[k], D::Path_forest::root);
+  for(const std::size_t compact_min_nodes : {std::size_t(0), D::square_pattern_compact_min_nodes})
+  {
+    const D::Path_forest forest = D::square_pattern_paths(h.mesh, h.faces, h.neighbors, compact_min_nodes);
+    EXPECT_EQ(forest.square_regions.empty(), compact_min_nodes != 0);
+    const std::vector<std::int32_t> parent = D::all_parents(forest);
+    ASSERT_EQ(forest.offsets[1] - forest.offsets[0], 3u);
+    for(std::uint32_t k = forest.offsets[0]; k < forest.offsets[1]; ++k)
+      EXPECT_EQ(parent[k], D::Path_forest::root);
+  }
 }
 
 TEST(SquarePattern, FandiskForestIsWellFormed)
@@ -166,6 +176,7 @@ TEST(SquarePattern, FandiskForestIsWellFormed)
   EXPECT_GT(d, 0.);
   const D::Csr nb = D::geometric_neighborhoods<CGAL::Sequential_tag>(m, fd.centroids, 4 * d);
   const D::Path_forest forest = D::square_pattern_paths(m, fd, nb);
+  const std::vector<std::int32_t> parent = D::all_parents(forest);
   std::size_t dropped = 0, total = 0;
   for(std::size_t i = 0; i < m.number_of_faces(); ++i)
   {
@@ -175,7 +186,7 @@ TEST(SquarePattern, FandiskForestIsWellFormed)
     for(std::uint32_t k = b; k < e; ++k)
     {
       ASSERT_NE(forest.face[k], i);
-      ASSERT_LT(forest.parent[k], std::int32_t(k - b)); // parents come first
+      ASSERT_LT(parent[k], std::int32_t(k - b)); // parents come first
       // every node is a neighbour within the radius
       ASSERT_LE(D::norm(fd.centroids[forest.face[k]] - fd.centroids[i]), 4 * d * (1 + 1e-12));
     }
@@ -212,6 +223,7 @@ static void expect_renumbering_changes_nothing(const Mesh& mesh)
   const D::Path_forest renumbered = D::square_pattern_paths_within<Tag>(rm, rfd, r);
 
   ASSERT_EQ(renumbered.face.size(), plain.face.size());
+  const std::vector<std::int32_t> renumbered_parent = D::all_parents(renumbered), plain_parent = D::all_parents(plain);
   for(std::size_t f = 0; f < rm.number_of_faces(); ++f)
   {
     const std::uint32_t g = rm.input_face[f];
@@ -219,7 +231,7 @@ static void expect_renumbering_changes_nothing(const Mesh& mesh)
     for(std::uint32_t k = 0; k < plain.offsets[g + 1] - plain.offsets[g]; ++k)
     {
       EXPECT_EQ(rm.input_face[renumbered.face[renumbered.offsets[f] + k]], plain.face[plain.offsets[g] + k]);
-      EXPECT_EQ(renumbered.parent[renumbered.offsets[f] + k], plain.parent[plain.offsets[g] + k]);
+      EXPECT_EQ(renumbered_parent[renumbered.offsets[f] + k], plain_parent[plain.offsets[g] + k]);
     }
   }
   D::Intrinsic_kernel kernel;
@@ -323,9 +335,55 @@ TEST(FilterPass, VectorKernelEqualsGenericEngine)
 #endif
 }
 
-// The two-pass construction (used from 200,000 faces on, forced here) builds
-// the same forest as the chunked one, node for node.
-TEST(SquarePattern, TwoPassConstructionGivesTheSameForest)
+// Path_forest::parents() on square-pattern region sizes gives the parents
+// of square_pattern_parent_rank(), region after region, for regions shorter
+// than, as long as and longer than the values it writes for every region
+// (Square_pattern_parent_table::width) and than its table; six zero sizes
+// hang every node from the root (degenerate face).
+TEST(SquarePattern, ParentsFromRegionSizes)
+{
+  const std::uint32_t w = D::Square_pattern_parent_table::width, t = D::Square_pattern_parent_table::size;
+  const std::vector<std::array<std::uint32_t, 6>> cases = {
+      {3, 0, 7, 1, 0, 12}, {0, 0, 0, 0, 0, 0}, {w - 1, w, w + 1, 1, 0, 2}, {t + 5, 2, 0, 0, 0, w + 3}, {0, 0, 0, 0, 0, 5}};
+  D::Path_forest forest;
+  forest.offsets = {0};
+  for(const auto& sizes : cases)
+  {
+    std::uint32_t count = 0;
+    for(std::uint32_t s : sizes)
+      count += s;
+    if(count == 0)
+      count = 9; // six zero sizes with nodes: a degenerate face
+    forest.offsets.push_back(forest.offsets.back() + count);
+    forest.square_regions.push_back(sizes);
+  }
+  forest.face.assign(forest.offsets.back(), 0u);
+  const std::vector<std::int32_t> parent = D::all_parents(forest);
+  for(std::size_t i = 0; i < cases.size(); ++i)
+  {
+    std::vector<std::int32_t> expected;
+    std::int32_t start = 0;
+    for(std::uint32_t size : cases[i])
+    {
+      for(std::uint32_t k = 1; k <= size; ++k)
+      {
+        const std::uint32_t pk = D::square_pattern_parent_rank(k);
+        expected.push_back(pk == 0 ? D::Path_forest::root : start + std::int32_t(pk) - 1);
+      }
+      start += std::int32_t(size);
+    }
+    if(expected.empty())
+      expected.assign(forest.offsets[i + 1] - forest.offsets[i], D::Path_forest::root);
+    const std::vector<std::int32_t> got(parent.begin() + forest.offsets[i], parent.begin() + forest.offsets[i + 1]);
+    EXPECT_EQ(got, expected) << "case " << i;
+  }
+}
+
+// The forest with its parents kept as region sizes (compact, used for large
+// forests, forced here) and the one with a parent per node are the same
+// trees, and every filter pass (dispatched, generic, SSE2, AVX2) gives
+// bitwise the same normals on both; the sequential and parallel builds agree.
+TEST(SquarePattern, CompactForestGivesTheSameTreesAndPasses)
 {
   Mesh fandisk;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
@@ -334,17 +392,61 @@ TEST(SquarePattern, TwoPassConstructionGivesTheSameForest)
   const D::Flat_mesh& m = setup.m;
   const D::Face_data& fd = setup.fd;
   const double r = setup.r;
-  const D::Path_forest chunked = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r);
-  const D::Path_forest two_pass = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r, 0);
-  EXPECT_EQ(two_pass.offsets, chunked.offsets);
-  EXPECT_EQ(two_pass.face, chunked.face);
-  EXPECT_EQ(two_pass.parent, chunked.parent);
-  EXPECT_GT(chunked.face.size(), 30u * m.number_of_faces());
+  const D::Path_forest stored = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r);
+  const D::Path_forest compact = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r, 0);
+  ASSERT_TRUE(stored.square_regions.empty());
+  ASSERT_EQ(compact.square_regions.size(), m.number_of_faces());
+  EXPECT_TRUE(compact.parent.empty());
+  EXPECT_EQ(compact.offsets, stored.offsets);
+  EXPECT_EQ(compact.face, stored.face);
+  EXPECT_EQ(D::all_parents(compact), stored.parent);
+  EXPECT_GT(stored.face.size(), 30u * m.number_of_faces());
 #ifdef CGAL_LINKED_WITH_TBB
   const D::Path_forest parallel = D::square_pattern_paths_within<CGAL::Parallel_tag>(m, fd, r, 0);
-  EXPECT_EQ(parallel.face, chunked.face);
-  EXPECT_EQ(parallel.parent, chunked.parent);
+  EXPECT_EQ(parallel.face, stored.face);
+  EXPECT_EQ(D::all_parents(parallel), stored.parent);
 #endif
+  D::Intrinsic_kernel kernel;
+  kernel.sigma_range = 0.3;
+  std::vector<std::pair<std::string, std::array<std::vector<D::Vec3>, 2>>> passes;
+  const D::Path_forest* forests[2] = {&stored, &compact};
+  for(int f = 0; f < 2; ++f)
+  {
+    const D::Path_forest& forest = *forests[f];
+    passes.resize(4);
+    passes[0].first = "dispatched";
+    D::intrinsic_filter_pass<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel, passes[0].second[f]);
+    passes[1].first = "generic";
+    D::intrinsic_filter_pass_generic<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel, passes[1].second[f]);
+#ifdef CGAL_PMP_DENOISING_SSE2
+    passes[2].first = "SSE2";
+    passes[2].second[f].resize(forest.number_of_faces());
+    D::intrinsic_filter_pass_l1_sse2<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel, passes[2].second[f]);
+#endif
+#ifdef CGAL_PMP_DENOISING_AVX2
+    if(D::cpu_has_avx2())
+    {
+      passes[3].first = "AVX2";
+      passes[3].second[f].resize(forest.number_of_faces());
+      D::intrinsic_filter_pass_l1_avx2<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel,
+                                                            passes[3].second[f]);
+    }
+#endif
+  }
+  for(const auto& p : passes)
+  {
+    EXPECT_EQ(p.second[0].size(), p.second[1].size()) << p.first;
+    std::size_t different = 0;
+    for(std::size_t i = 0; i < p.second[0].size() && i < p.second[1].size(); ++i)
+      different += p.second[0][i] != p.second[1][i] ? 1 : 0;
+    EXPECT_EQ(different, 0u) << p.first;
+  }
+  EXPECT_EQ(passes[0].second[0].size(), m.number_of_faces());
+  // step lengths (eq. 4) follow the same parents
+  D::Path_forest stored_steps = stored, compact_steps = compact;
+  D::set_step_lengths(stored_steps, fd.centroids, 1.);
+  D::set_step_lengths(compact_steps, fd.centroids, 1.);
+  EXPECT_EQ(stored_steps.step, compact_steps.step);
 }
 
 // Renumbering the vertices after the faces: a permutation (not the identity

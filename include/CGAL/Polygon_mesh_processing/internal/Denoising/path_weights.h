@@ -148,11 +148,12 @@ void intrinsic_weights_pass(const Path_forest& forest, const Intrinsic_kernel& k
   for_each_chunk<ConcurrencyTag>(n, [&](std::size_t ib, std::size_t ie) {
     // slot 0 holds the root's sums (0); node k of a tree is slot k + 1
     std::vector<double> spatial(max_nodes + 1, 0.), range(max_nodes + 1, 0.), weight(max_nodes);
+    std::vector<std::int32_t> parent_scratch(max_nodes + Square_pattern_parent_table::width);
     for(std::size_t i = ib; i < ie; ++i)
     {
       const std::uint32_t b = forest.offsets[i], e = forest.offsets[i + 1];
       const std::uint32_t* face = forest.face.data() + b;
-      const std::int32_t* parent = forest.parent.data() + b;
+      const std::int32_t* parent = forest.parents(i, parent_scratch.data());
       const std::uint32_t count = e - b;
       if(l1 && !with_steps) // the paper's case, without pow or branches
         for(std::uint32_t k = 0; k < count; ++k)
@@ -268,13 +269,14 @@ void intrinsic_filter_pass_l1_sse2(const Path_forest& forest, const std::vector<
     // sums[2 (k + 1)] = spatial sum of node k, sums[2 (k + 1) + 1] its range
     // sum; slot 0 is the root's (0, 0); one spare node pads an odd count
     std::vector<double> sums(2 * (max_nodes + 2), 0.), weight(max_nodes + 1);
+    std::vector<std::int32_t> parent_scratch(max_nodes + Square_pattern_parent_table::width);
     const __m128d va = _mm_set1_pd(a), vb = _mm_set1_pd(b);
     const __m128d sign = _mm_set1_pd(-0.);
     for(std::size_t i = ib; i < ie; ++i)
     {
       const std::uint32_t nb = forest.offsets[i], ne = forest.offsets[i + 1];
       const std::uint32_t* face = forest.face.data() + nb;
-      const std::int32_t* parent = forest.parent.data() + nb;
+      const std::int32_t* parent = forest.parents(i, parent_scratch.data());
       const std::uint32_t count = ne - nb;
       const Vec3& ni = normals[i];
       // high lanes: the root's normal, for the range terms
@@ -353,11 +355,12 @@ CGAL_PMP_DENOISING_AVX2_TARGET inline void exp_nonpositive_4(const double* x, do
 // sums in tree order, so the roots do not wait for the sums; the weights are
 // computed four nodes at a time. The operations on each value are the SSE2
 // kernel's, in its order. Scratch: sums 2 (max_nodes + 4), roots
-// 2 (max_nodes + 2), weight max_nodes + 4 doubles.
+// 2 (max_nodes + 2), weight max_nodes + 4 doubles, parent_scratch
+// max_nodes + Square_pattern_parent_table::width.
 CGAL_PMP_DENOISING_AVX2_TARGET inline void intrinsic_filter_faces_l1_avx2(
     const Path_forest& forest, const std::vector<Vec3>& normals, const std::vector<double>& areas, double a,
     double b, bool include_self, std::size_t ib, std::size_t ie, double* sums, double* roots, double* weight,
-    std::vector<Vec3>& out)
+    std::int32_t* parent_scratch, std::vector<Vec3>& out)
 {
   const Exp_table& table = Exp_table::instance();
   const __m256d va = _mm256_set1_pd(a), vb = _mm256_set1_pd(b);
@@ -367,7 +370,7 @@ CGAL_PMP_DENOISING_AVX2_TARGET inline void intrinsic_filter_faces_l1_avx2(
   {
     const std::uint32_t nb = forest.offsets[i], ne = forest.offsets[i + 1];
     const std::uint32_t* face = forest.face.data() + nb;
-    const std::int32_t* parent = forest.parent.data() + nb;
+    const std::int32_t* parent = forest.parents(i, parent_scratch);
     const std::uint32_t count = ne - nb;
     const Vec3& ni = nrm[i];
     // lanes (step k, range k, step k+1, range k+1): the step is taken
@@ -434,8 +437,9 @@ void intrinsic_filter_pass_l1_avx2(const Path_forest& forest, const std::vector<
                b = 1. / (2. * kernel.sigma_range * kernel.sigma_range);
   for_each_chunk<ConcurrencyTag>(forest.number_of_faces(), [&](std::size_t ib, std::size_t ie) {
     std::vector<double> sums(2 * (max_nodes + 4), 0.), roots(2 * (max_nodes + 2)), weight(max_nodes + 4);
+    std::vector<std::int32_t> parent_scratch(max_nodes + Square_pattern_parent_table::width);
     intrinsic_filter_faces_l1_avx2(forest, normals, areas, a, b, kernel.include_self, ib, ie, sums.data(),
-                                   roots.data(), weight.data(), out);
+                                   roots.data(), weight.data(), parent_scratch.data(), out);
   });
 }
 #endif
