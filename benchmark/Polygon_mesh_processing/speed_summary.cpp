@@ -17,10 +17,17 @@
 //    denoise, the denoise's peak (VmHWM reset just before it) and the
 //    process's peak (getrusage).
 //
+// 4. Linearity on one shape: fandisk refined by 0 to 3 Loop steps (13k to
+//    829k faces, same noise, k 20), whole denoise with 2 threads and its
+//    seconds per face and iteration, beside the mean neighbourhood size
+//    (the bunny family of table 2 gains neighbours per face as subdivision
+//    makes its irregular triangles regular, which table 4 keeps apart).
+//
 // Usage: speed_summary [max_faces]      all tables (sizes up to max_faces)
 //        speed_summary --fast-grid      the grid the fast settings come from
 //        speed_summary --size i         one row pair of table 2 (child)
 //        speed_summary --memory i       one row of table 3 (child)
+//        speed_summary --family i       one row of table 4 (child)
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -290,6 +297,50 @@ static int memory_row(int i)
   return 0;
 }
 
+// Fandisk refined by i Loop steps, denoised with 2 threads (fixed defaults,
+// k 20; best of 3 runs, 2 from 200,000 faces on).
+static int family_row(int i)
+{
+  Mesh reference;
+  if(!read_mesh("meshes/fandisk.off", reference))
+    return 1;
+  if(i > 0)
+    CGAL::Subdivision_method_3::Loop_subdivision(reference, CGAL::parameters::number_of_iterations(i));
+  const Mesh noisy = noisy_copy(reference);
+  const unsigned int k = 20;
+  const std::size_t n = num_faces(noisy);
+  double mean_neighbors = 0.;
+  {
+    const auto np = CGAL::parameters::default_values();
+    const D::Mesh_maps<Mesh, decltype(np)> maps(noisy, np);
+    const D::Flat_mesh m = maps.flat(noisy, "speed_summary");
+    D::Face_data fd;
+    D::compute_face_data<CGAL::Sequential_tag>(m, m.points, fd);
+    const double d = D::mean_adjacent_centroid_distance(m, fd);
+    const D::Csr nb = D::geometric_neighborhoods<CGAL::Sequential_tag>(m, fd.centroids, 4 * d);
+    mean_neighbors = double(nb.items.size()) / double(n);
+  }
+  Mesh result;
+  double En = 0.;
+  const double t = seconds(
+      [&]
+      {
+        result = noisy;
+#ifdef CGAL_LINKED_WITH_TBB
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+        PMP::intrinsic_denoising<CGAL::Parallel_tag>(result, CGAL::parameters::number_of_iterations(k).automatic_parameters(false));
+#else
+        PMP::intrinsic_denoising<CGAL::Sequential_tag>(result, CGAL::parameters::number_of_iterations(k).automatic_parameters(false));
+#endif
+      },
+      n < 200000 ? 3 : 2);
+  En = PMP::face_normal_error(result, reference);
+  std::printf("| fandisk + Loop x%d | %zu | %.1f | %.3f | %u | %.3e | %.3f |\n", i, n, mean_neighbors, t, k,
+              t / (double(n) * k), En);
+  std::fflush(stdout);
+  return 0;
+}
+
 // Wall and CPU seconds of f (best wall of `repeat` runs, CPU of that run).
 template <typename F> static std::pair<double, double> wall_and_cpu(const F &f, int repeat)
 {
@@ -416,6 +467,8 @@ int main(int argc, char **argv)
     return size_rows(std::atoi(argv[2]));
   if(argc > 2 && std::string(argv[1]) == "--memory")
     return memory_row(std::atoi(argv[2]));
+  if(argc > 2 && std::string(argv[1]) == "--family")
+    return family_row(std::atoi(argv[2]));
   if(argc > 1 && std::string(argv[1]) == "--fast-grid")
   {
     Mesh fandisk;
@@ -447,5 +500,15 @@ int main(int argc, char **argv)
   for(int i = 0; i < number_of_sizes; ++i)
     if(faces_of_size[i] <= max_faces && std::system((self + " --memory " + std::to_string(i)).c_str()) != 0)
       std::printf("| (size %d failed) |\n", i);
+
+  std::printf("\n### Linearity on one shape (fandisk refined by Loop subdivision, 2 threads, each size in its own "
+              "process)\n\n");
+  std::printf("| mesh | faces | neighbours / face at r=4d | whole denoise (s) | k | s / face / iteration | E_n (deg) "
+              "|\n|---|---|---|---|---|---|---|\n");
+  std::fflush(stdout);
+  const std::size_t family_faces[4] = {12946, 51784, 207136, 828544};
+  for(int i = 0; i < 4; ++i)
+    if(family_faces[i] <= max_faces && std::system((self + " --family " + std::to_string(i)).c_str()) != 0)
+      std::printf("| (fandisk + Loop x%d failed) |\n", i);
   return 0;
 }
