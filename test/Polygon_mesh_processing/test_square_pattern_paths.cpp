@@ -40,6 +40,53 @@ struct Flat_setup
   }
 };
 
+// The mean distance d between adjacent centroids and the mean edge length
+// are the same, bitwise, with Parallel_tag (values computed in parallel,
+// added in order) as with Sequential_tag: on noisy fandisk, and on a grid
+// with four fins on one edge, whose faces there have more values than the
+// parallel version keeps per face (it must fall back to the sequential sum).
+TEST(FaceData, MeansAreTheSameWithEveryConcurrencyTag)
+{
+  Mesh fandisk;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
+  CGAL::Polygon_mesh_processing::add_gaussian_noise(fandisk, 0.3, CGAL::parameters::random_seed(3));
+  const Flat_setup<> noisy(fandisk);
+  Flat_setup<> fins(denoising_test::plane_grid<Mesh>(48)); // 4608 faces
+  {
+    D::Flat_mesh& m = fins.m;
+    const std::array<std::uint32_t, 3> t = m.triangles[0];
+    for(int k = 0; k < 4; ++k) // fins on the edge (t[0], t[1]) of face 0
+    {
+      m.points.push_back({0.01 * k, 0.02, 0.1 + 0.1 * k});
+      m.triangles.push_back({t[0], t[1], std::uint32_t(m.points.size() - 1)});
+    }
+    m.vertex_face_offsets.assign(m.points.size() + 1, 0);
+    for(const auto& u : m.triangles)
+      for(std::uint32_t v : u)
+        ++m.vertex_face_offsets[v + 1];
+    for(std::size_t v = 0; v < m.points.size(); ++v)
+      m.vertex_face_offsets[v + 1] += m.vertex_face_offsets[v];
+    m.vertex_faces.assign(m.vertex_face_offsets.back(), 0);
+    std::vector<std::uint32_t> fill(m.vertex_face_offsets.begin(), m.vertex_face_offsets.end() - 1);
+    for(std::size_t f = 0; f < m.triangles.size(); ++f)
+      for(std::uint32_t v : m.triangles[f])
+        m.vertex_faces[fill[v]++] = std::uint32_t(f);
+    D::compute_face_data<CGAL::Sequential_tag>(m, m.points, fins.fd);
+  }
+  for(const Flat_setup<>* s : {&noisy, static_cast<const Flat_setup<>*>(&fins)})
+  {
+    ASSERT_GT(s->m.number_of_faces(), 4096u); // the parallel version's size
+    const double d = D::mean_adjacent_centroid_distance<CGAL::Sequential_tag>(s->m, s->fd);
+    const double l = D::mean_edge_length<CGAL::Sequential_tag>(s->m);
+    EXPECT_GT(d, 0.);
+    EXPECT_GT(l, 0.);
+#ifdef CGAL_LINKED_WITH_TBB
+    EXPECT_EQ(D::mean_adjacent_centroid_distance<CGAL::Parallel_tag>(s->m, s->fd), d);
+    EXPECT_EQ(D::mean_edge_length<CGAL::Parallel_tag>(s->m), l);
+#endif
+  }
+}
+
 TEST(SquarePattern, ParentRanksFollowThePaper)
 {
   // node 1 hangs from face i (rank 0); 2..4 from 1; 5..9 from 4; 10..16 from 9

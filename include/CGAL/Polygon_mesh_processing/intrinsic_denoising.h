@@ -352,7 +352,7 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
   D::Automatic_choice choice;
   const bool need_noise = report.automatic_parameters || stop_rule;
   auto choose_defaults = [&](const D::Flat_mesh& mesh) {
-    report.mean_edge_length = D::mean_edge_length(mesh);
+    report.mean_edge_length = D::mean_edge_length<ConcurrencyTag>(mesh);
     if(need_noise)
     {
       report.noise_level = given_noise >= 0. ? given_noise : D::estimate_noise<ConcurrencyTag>(mesh).relative_noise;

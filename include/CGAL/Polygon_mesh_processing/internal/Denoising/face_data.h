@@ -377,14 +377,57 @@ inline std::vector<double> vertex_areas(const Flat_mesh& m, const std::vector<do
   return a;
 }
 
-// Mean distance between the centroids of edge-adjacent faces: the paper's d.
-// Returns 0 if no two faces share an edge.
-inline double mean_adjacent_centroid_distance(const Flat_mesh& m, const Face_data& fd)
+// The mean of the values that terms(f, add) gives for every face f (one
+// call add(x) per value), added in the order of the faces and of the calls,
+// as one sequential loop would. With Parallel_tag the values are computed in
+// parallel (at most 3 per face kept) and only added in order, so the result
+// is bitwise the same; a face with more than 3 values (a non-manifold edge)
+// makes the whole computation sequential. Returns 0 if there is no value.
+template <typename ConcurrencyTag, typename Terms>
+double mean_of_face_terms(std::size_t n, const Terms& terms)
 {
   double sum = 0.;
   std::size_t count = 0;
-  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+  const auto add = [&sum, &count](double x) {
+    sum += x;
+    ++count;
+  };
+  bool in_order = !std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value || n < 4096;
+  if(!in_order)
   {
+    std::vector<std::array<double, 3>> values(n);
+    std::vector<unsigned char> counts(n);
+    for_each_chunk<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
+      for(std::size_t f = b; f < e; ++f)
+      {
+        unsigned int c = 0;
+        terms(f, [&](double x) {
+          if(c < 3)
+            values[f][c] = x;
+          ++c;
+        });
+        counts[f] = static_cast<unsigned char>((std::min)(c, 4u));
+      }
+    });
+    in_order = std::find(counts.begin(), counts.end(), static_cast<unsigned char>(4)) != counts.end();
+    if(!in_order)
+      for(std::size_t f = 0; f < n; ++f)
+        for(unsigned int c = 0; c < counts[f]; ++c)
+          add(values[f][c]);
+  }
+  if(in_order)
+    for(std::size_t f = 0; f < n; ++f)
+      terms(f, add);
+  return count == 0 ? 0. : sum / double(count);
+}
+
+// Mean distance between the centroids of edge-adjacent faces: the paper's d.
+// Returns 0 if no two faces share an edge. The same value with every
+// concurrency tag.
+template <typename ConcurrencyTag = CGAL::Sequential_tag>
+double mean_adjacent_centroid_distance(const Flat_mesh& m, const Face_data& fd)
+{
+  return mean_of_face_terms<ConcurrencyTag>(m.number_of_faces(), [&](std::size_t f, const auto& add) {
     const auto& t = m.triangles[f];
     for(int k = 0; k < 3; ++k)
     {
@@ -397,24 +440,19 @@ inline double mean_adjacent_centroid_distance(const Flat_mesh& m, const Face_dat
           continue;
         const auto& u = m.triangles[g];
         if(u[0] == b || u[1] == b || u[2] == b)
-        {
-          sum += norm(fd.centroids[g] - fd.centroids[f]);
-          ++count;
-        }
+          add(norm(fd.centroids[g] - fd.centroids[f]));
       }
     }
-  }
-  return count == 0 ? 0. : sum / double(count);
+  });
 }
 
 // Mean edge length (each edge once), used to scale noise. The faces of each
-// vertex must be listed by increasing index (a mesh not renumbered).
-inline double mean_edge_length(const Flat_mesh& m)
+// vertex must be listed by increasing index (a mesh not renumbered). The
+// same value with every concurrency tag.
+template <typename ConcurrencyTag = CGAL::Sequential_tag>
+double mean_edge_length(const Flat_mesh& m)
 {
-  double sum = 0.;
-  std::size_t count = 0;
-  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
-  {
+  return mean_of_face_terms<ConcurrencyTag>(m.number_of_faces(), [&](std::size_t f, const auto& add) {
     const auto& t = m.triangles[f];
     for(int k = 0; k < 3; ++k)
     {
@@ -431,13 +469,9 @@ inline double mean_edge_length(const Flat_mesh& m)
           first = false;
       }
       if(first)
-      {
-        sum += norm(m.points[b] - m.points[a]);
-        ++count;
-      }
+        add(norm(m.points[b] - m.points[a]));
     }
-  }
-  return count == 0 ? 0. : sum / double(count);
+  });
 }
 
 } // namespace Denoising

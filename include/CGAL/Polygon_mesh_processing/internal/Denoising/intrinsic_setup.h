@@ -164,7 +164,7 @@ Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParam
   const Setup_defaults defaults = choose_defaults(static_cast<const Flat_mesh&>(s.mesh));
   s.kernel = read_kernel(np, fname, false, defaults);
   compute_face_data<ConcurrencyTag>(s.mesh, s.mesh.points, s.input_faces);
-  const double d = mean_adjacent_centroid_distance(s.mesh, s.input_faces);
+  const double d = mean_adjacent_centroid_distance<ConcurrencyTag>(s.mesh, s.input_faces);
   s.centroid_distance = d;
   s.radius = read_radius(np, fname, d, defaults.relative_radius);
   if(strategy == Intrinsic_path_strategy::SQUARE_PATTERN || strategy == Intrinsic_path_strategy::DIRECT)

@@ -129,7 +129,7 @@ Noise_estimate estimate_noise(const Flat_mesh& m, double quantile = Noise_quanti
                               double ratio = Noise_quantile::ratio_to_sigma)
 {
   Noise_estimate est;
-  est.mean_edge_length = mean_edge_length(m);
+  est.mean_edge_length = mean_edge_length<ConcurrencyTag>(m);
   const Csr adjacency = vertex_adjacency(m);
   est.residuals = local_fit_residuals<ConcurrencyTag>(m, adjacency, area_weighted_vertex_normals(m),
                                                       est.mean_edge_length);
