@@ -13,8 +13,10 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <vector>
+#include <limits>
+#include <stdexcept>
 #include <type_traits>
+#include <vector>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
@@ -54,7 +56,8 @@ void for_each_chunk(std::size_t n, const Body& body, std::size_t grain = 256)
 // Builds a list of records for each item 0..n-1, in parallel chunks, and
 // hands the chunks in item order to `append(chunk)`, freeing each one right
 // after, so that the records exist about once in memory; fills offsets (size
-// n + 1). `make_scratch()` makes the scratch state of one chunk (allocated
+// n + 1; std::length_error if the lists total 2^32 entries or more).
+// `make_scratch()` makes the scratch state of one chunk (allocated
 // once per chunk); `fill(i, scratch, out)` appends item i's records to `out`.
 template <typename ConcurrencyTag, typename Record, typename MakeScratch, typename Fill, typename Append>
 void build_lists(std::size_t n, std::vector<std::uint32_t>& offsets, const MakeScratch& make_scratch,
@@ -83,7 +86,11 @@ void build_lists(std::size_t n, std::vector<std::uint32_t>& offsets, const MakeS
       },
       1);
   for(std::size_t i = 0; i < n; ++i)
+  {
+    if(offsets[i + 1] > (std::numeric_limits<std::uint32_t>::max)() - offsets[i])
+      throw std::length_error("more than 2^32 list entries (paths or neighbours) for this mesh and radius");
     offsets[i + 1] += offsets[i];
+  }
   for(auto& c : chunks)
   {
     append(c);
