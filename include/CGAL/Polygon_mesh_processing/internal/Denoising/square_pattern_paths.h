@@ -50,7 +50,6 @@ struct Square_pattern_frame
   Vec3 a, b, c, n;
   double twice_area = 0.;
   bool degenerate = true; // zero normal or area: every neighbour in region 0
-  double reach2 = 0.;     // squared distance from c_i to its farthest corner
 
   Square_pattern_frame(const Flat_mesh& m, const Face_data& fd, std::size_t i)
   {
@@ -61,8 +60,6 @@ struct Square_pattern_frame
     n = fd.normals[i];
     twice_area = dot(cross(b - a, c - a), n);
     degenerate = squared_norm(n) == 0. || !(twice_area > 0.);
-    const Vec3& ci = fd.centroids[i];
-    reach2 = (std::max)((std::max)(squared_norm(a - ci), squared_norm(b - ci)), squared_norm(c - ci));
   }
 
   // The region (0..5) of a neighbour with centroid p, or -1 if p projects
@@ -123,23 +120,42 @@ inline std::array<std::uint32_t, 6> square_pattern_tree(const Flat_mesh& m, cons
 // forests store one parent per node.
 constexpr std::size_t square_pattern_compact_min_nodes = std::size_t(1) << 25;
 
+// The square-pattern forest of every face, its tree built over the
+// neighbours that `neighbors(i, scratch)` returns ([begin, end) pointers;
+// scratch.regions is the tree's scratch), with the parents stored per node
+// below compact_min_nodes nodes and kept as region sizes from there on.
+template <typename ConcurrencyTag, typename MakeScratch, typename Neighbors>
+Path_forest square_pattern_forest(const Flat_mesh& m, const Face_data& fd, std::size_t compact_min_nodes,
+                                  const MakeScratch& make_scratch, const Neighbors& neighbors)
+{
+  Path_forest forest;
+  forest.square_regions.resize(m.number_of_faces());
+  build_lists<ConcurrencyTag>(m.number_of_faces(), forest.offsets, forest.face, make_scratch,
+                              [&](std::size_t i, auto& scratch, std::vector<std::uint32_t>& out) {
+                                const auto range = neighbors(i, scratch);
+                                forest.square_regions[i] =
+                                    square_pattern_tree(m, fd, i, range.first, range.second, scratch.regions, out);
+                              });
+  if(forest.face.size() < compact_min_nodes)
+    store_parents(forest);
+  return forest;
+}
+
 // Builds the square-pattern forest on the mesh as it is (the paper computes
 // it once, on the input mesh), from the neighbourhoods `neighbors`.
 template <typename ConcurrencyTag = CGAL::Sequential_tag>
 Path_forest square_pattern_paths(const Flat_mesh& m, const Face_data& fd, const Csr& neighbors,
                                  std::size_t compact_min_nodes = square_pattern_compact_min_nodes)
 {
-  Path_forest forest;
-  forest.square_regions.resize(m.number_of_faces());
-  build_lists<ConcurrencyTag>(
-      m.number_of_faces(), forest.offsets, forest.face, [] { return Square_pattern_regions(); },
-      [&](std::size_t i, Square_pattern_regions& regions, std::vector<std::uint32_t>& out) {
-        forest.square_regions[i] = square_pattern_tree(m, fd, i, neighbors.items.data() + neighbors.begin(i),
-                                                       neighbors.items.data() + neighbors.end(i), regions, out);
+  struct Scratch
+  {
+    Square_pattern_regions regions;
+  };
+  return square_pattern_forest<ConcurrencyTag>(
+      m, fd, compact_min_nodes, [] { return Scratch(); },
+      [&neighbors](std::size_t i, Scratch&) {
+        return std::make_pair(neighbors.items.data() + neighbors.begin(i), neighbors.items.data() + neighbors.end(i));
       });
-  if(forest.face.size() < compact_min_nodes)
-    store_parents(forest);
-  return forest;
 }
 
 // The same forest for the geometric neighbourhoods of radius `radius`
@@ -161,18 +177,12 @@ Path_forest square_pattern_paths_within(const Flat_mesh& m, const Face_data& fd,
   const double r2 = radius * radius;
   // the search reaches the faces geometric_neighborhoods() lists, in another
   // order; the trees do not depend on the order (they are sorted)
-  Path_forest forest;
-  forest.square_regions.resize(m.number_of_faces());
-  build_lists<ConcurrencyTag>(
-      m.number_of_faces(), forest.offsets, forest.face, [&m] { return Scratch{Face_fan_search(m), {}}; },
-      [&](std::size_t i, Scratch& s, std::vector<std::uint32_t>& out) {
+  return square_pattern_forest<ConcurrencyTag>(
+      m, fd, compact_min_nodes, [&m] { return Scratch{Face_fan_search(m), {}}; },
+      [&](std::size_t i, Scratch& s) {
         s.search.run(i, m, fd.centroids, r2);
-        forest.square_regions[i] =
-            square_pattern_tree(m, fd, i, s.search.neighbors_begin(), s.search.neighbors_end(), s.regions, out);
+        return std::make_pair(s.search.neighbors_begin(), s.search.neighbors_end());
       });
-  if(forest.face.size() < compact_min_nodes)
-    store_parents(forest);
-  return forest;
 }
 
 } // namespace Denoising
