@@ -321,7 +321,6 @@ static int family_row(int i)
     mean_neighbors = double(nb.items.size()) / double(n);
   }
   Mesh result;
-  double En = 0.;
   const double t = seconds(
       [&]
       {
@@ -334,7 +333,7 @@ static int family_row(int i)
 #endif
       },
       n < 200000 ? 3 : 2);
-  En = PMP::face_normal_error(result, reference);
+  const double En = PMP::face_normal_error(result, reference);
   std::printf("| fandisk + Loop x%d | %zu | %.1f | %.3f | %u | %.3e | %.3f |\n", i, n, mean_neighbors, t, k,
               t / (double(n) * k), En);
   std::fflush(stdout);
