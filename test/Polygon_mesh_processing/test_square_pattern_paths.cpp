@@ -193,6 +193,76 @@ TEST(SquarePattern, HandBuiltNeighbourhoodGivesRegionsOrderAndParents)
   EXPECT_EQ(parent[b + other], D::Path_forest::root);
 }
 
+// Every face's tree is its kept neighbours region after region (regions 0
+// to 5), each region sorted by distance to c_i with ties broken by the input
+// index: checked against trees built here with one std::sort per region, on
+// noisy fandisk at r = 4d (regions of about 10 nodes, sorted by counting)
+// and r = 14d (regions past square_pattern_counting_max nodes, sorted by
+// comparisons), and at both radii on a noise-free cube, whose grid has many
+// equal distances.
+struct Region_counts
+{
+  std::size_t largest = 0; // nodes of the largest region
+  std::size_t ties = 0;    // neighbours at the same distance as the next one in their region
+};
+
+static void expect_sorted_regions(const Mesh& mesh, double radius_in_d, Region_counts& counts)
+{
+  const Flat_setup<> setup(mesh);
+  const D::Flat_mesh& m = setup.m;
+  const D::Face_data& fd = setup.fd;
+  const D::Csr nb = D::geometric_neighborhoods<CGAL::Sequential_tag>(m, fd.centroids, setup.r / 4. * radius_in_d);
+  const D::Path_forest forest = D::square_pattern_paths(m, fd, nb, 0); // keeps the region sizes
+  ASSERT_EQ(forest.square_regions.size(), m.number_of_faces());
+  for(std::size_t i = 0; i < m.number_of_faces(); ++i)
+  {
+    std::array<std::vector<std::pair<double, std::uint32_t>>, 6> regions;
+    const D::Square_pattern_frame frame(m, fd, i);
+    for(std::uint32_t k = nb.begin(i); k < nb.end(i); ++k)
+    {
+      const std::uint32_t j = nb.items[k];
+      const int r = frame.region(fd.centroids[j]);
+      if(r >= 0)
+        regions[r].emplace_back(D::squared_norm(fd.centroids[j] - fd.centroids[i]), j); // input order
+    }
+    std::vector<std::uint32_t> expected;
+    for(int r = 0; r < 6; ++r)
+    {
+      std::sort(regions[r].begin(), regions[r].end());
+      for(std::size_t k = 0; k + 1 < regions[r].size(); ++k)
+        counts.ties += regions[r][k].first == regions[r][k + 1].first ? 1 : 0;
+      for(const auto& node : regions[r])
+        expected.push_back(node.second);
+      ASSERT_EQ(forest.square_regions[i][r], regions[r].size()) << "face " << i << " region " << r;
+      counts.largest = (std::max)(counts.largest, regions[r].size());
+    }
+    ASSERT_EQ(std::vector<std::uint32_t>(forest.face.begin() + forest.offsets[i],
+                                         forest.face.begin() + forest.offsets[i + 1]),
+              expected)
+        << "face " << i;
+  }
+}
+
+TEST(SquarePattern, TreesAreRegionsSortedByDistanceThenInputIndex)
+{
+  Mesh fandisk;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
+  CGAL::Polygon_mesh_processing::add_gaussian_noise(fandisk, 0.3, CGAL::parameters::random_seed(5));
+  Region_counts near, far, cube_near, cube_far;
+  expect_sorted_regions(fandisk, 4., near);
+  EXPECT_LE(near.largest, D::square_pattern_counting_max); // sorted by counting only
+  expect_sorted_regions(fandisk, 14., far);
+  EXPECT_GT(far.largest, D::square_pattern_counting_max); // the comparison sort ran too
+  // the tie-break, in both sorts
+  const Mesh cube = denoising_test::cube<Mesh>(12);
+  expect_sorted_regions(cube, 4., cube_near);
+  EXPECT_LE(cube_near.largest, D::square_pattern_counting_max);
+  EXPECT_GT(cube_near.ties, 0u);
+  expect_sorted_regions(cube, 14., cube_far);
+  EXPECT_GT(cube_far.largest, D::square_pattern_counting_max);
+  EXPECT_GT(cube_far.ties, 0u);
+}
+
 TEST(SquarePattern, DegenerateFaceFallsBackToDirectPaths)
 {
   Hand_built h({{0.6, 0.6, 0.}, {0.9, 0.9, 0.}, {1.2, 1.2, 0.}});

@@ -18,6 +18,10 @@
 #include <type_traits>
 #include <vector>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -53,6 +57,19 @@ void for_each_chunk(std::size_t n, const Body& body, std::size_t grain = 256)
 #endif
 }
 
+// Gives the pages of freed heap blocks back to the system (glibc; elsewhere
+// nothing). The chunks of build_lists grow by reallocation in every thread's
+// heap, and once freed their pages would stay resident for the rest of the
+// process: on 1.2M faces that is 200 MiB of the square-pattern build (RSS
+// after it 731 MiB, 534 MiB after this), which the filter iterations then
+// add to.
+inline void release_free_memory()
+{
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
+
 // Builds a list of records for each item 0..n-1, in parallel chunks, and
 // hands the chunks in item order to `append(chunk)`, freeing each one right
 // after, so that the records exist about once in memory; fills offsets (size
@@ -66,6 +83,7 @@ void build_lists(std::size_t n, std::vector<std::uint32_t>& offsets, const MakeS
   // few chunks: a chunk's scratch may be as large as the mesh
   const std::size_t chunk_size = (std::max)(std::size_t(2048), n / 64 + 1);
   const std::size_t nchunks = (n + chunk_size - 1) / chunk_size;
+  const std::size_t sample = 64; // items whose records size the rest of their chunk
   std::vector<std::vector<Record>> chunks(nchunks);
   offsets.assign(n + 1, 0);
   for_each_chunk<ConcurrencyTag>(
@@ -75,12 +93,14 @@ void build_lists(std::size_t n, std::vector<std::uint32_t>& offsets, const MakeS
         for(std::size_t c = cb; c < ce; ++c)
         {
           std::vector<Record>& out = chunks[c];
-          const std::size_t last = (std::min)(n, (c + 1) * chunk_size);
-          for(std::size_t i = c * chunk_size; i < last; ++i)
+          const std::size_t first = c * chunk_size, last = (std::min)(n, (c + 1) * chunk_size);
+          for(std::size_t i = first; i < last; ++i)
           {
             const std::size_t before = out.size();
             fill(i, scratch, out);
             offsets[i + 1] = std::uint32_t(out.size() - before);
+            if(i == first + sample - 1 && last - first > 2 * sample)
+              out.reserve(out.size() / sample * (last - first) / 8 * 9); // one allocation, 1/8 to spare
           }
         }
       },
@@ -96,6 +116,7 @@ void build_lists(std::size_t n, std::vector<std::uint32_t>& offsets, const MakeS
     append(c);
     std::vector<Record>().swap(c);
   }
+  release_free_memory();
 }
 
 // The same, appending the records to `records`.
