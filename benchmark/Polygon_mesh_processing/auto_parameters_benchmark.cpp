@@ -273,10 +273,10 @@ int main(int argc, char** argv)
     }
     return 0;
   }
-  std::printf("| input | kind | noise | faces | noisy E_n | auto E_n | estimated noise | sigma | r (d) | k | stop | auto s | fixed defaults E_n |"
+  std::printf("| input | kind | noise | faces | noisy E_n | auto E_n | estimated noise | flat edges | schedule | first schedule E_n | sigma | r (d) | k | stop | auto s | fixed defaults E_n |"
               "%s FDC03 | JDD03 | SRML07 | ZFAT11 | HS13 | ZDZ15 | best classic | auto / best classic |\n",
               grid ? " grid best E_n | at (sigma, r, k) | auto / grid |" : "");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|%s---|---|---|---|---|---|---|---|\n",
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|%s---|---|---|---|---|---|---|---|\n",
               grid ? "---|---|---|" : "");
   for(const Input& in : inputs)
   {
@@ -288,9 +288,28 @@ int main(int argc, char** argv)
     const char* stop = r.stop_reason == PMP::Intrinsic_stop_reason::NOISE_LEVEL_REACHED ? "noise level"
                        : r.stop_reason == PMP::Intrinsic_stop_reason::CONVERGED      ? "converged"
                                                                                      : "limit";
-    std::printf("| %s | %s | %s | %zu | %.3f | **%.3f** | %.3f | %.3f | %.2f | %u | %s | %.2f |", in.name.c_str(),
-                in.kind.c_str(), in.noise.c_str(), std::size_t(num_faces(a)), PMP::face_normal_error(in.noisy, in.reference),
-                auto_En, r.noise_level, r.sigma_spatial, r.relative_neighbor_radius, r.iterations, stop, seconds);
+    // the shape test's flat-edge fraction, and the schedule kept (with the
+    // first schedule's discarded iterations)
+    char schedule[64];
+    if(r.smooth_surface)
+      std::snprintf(schedule, sizeof schedule, "smooth (after %u)", r.discarded_iterations);
+    else
+      std::snprintf(schedule, sizeof schedule, "flat");
+    // what the first schedule alone gives (its sigma given: no shape test)
+    std::string first = "(kept)";
+    if(r.smooth_surface)
+    {
+      Mesh f = in.noisy;
+      const double sigma = D::automatic_choice(r.noise_level).kernel.sigma_spatial;
+      PMP::intrinsic_denoising<Tag>(f, CGAL::parameters::sigma_spatial(sigma).sigma_range(sigma));
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.3f", PMP::face_normal_error(f, in.reference));
+      first = buf;
+    }
+    std::printf("| %s | %s | %s | %zu | %.3f | **%.3f** | %.3f | %.3f | %s | %s | %.3f | %.2f | %u | %s | %.2f |",
+                in.name.c_str(), in.kind.c_str(), in.noise.c_str(), std::size_t(num_faces(a)),
+                PMP::face_normal_error(in.noisy, in.reference), auto_En, r.noise_level, r.flat_edge_fraction, schedule,
+                first.c_str(), r.sigma_spatial, r.relative_neighbor_radius, r.iterations, stop, seconds);
     Mesh fixed = in.noisy;
     PMP::intrinsic_denoising<Tag>(fixed, CGAL::parameters::automatic_parameters(false));
     std::printf(" %.3f |", PMP::face_normal_error(fixed, in.reference));

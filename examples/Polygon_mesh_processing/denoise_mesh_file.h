@@ -264,6 +264,12 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
   if(r.noise_level_estimated || r.noise_level > 0. || r.automatic_parameters)
     out << "noise level: " << r.noise_level << " x mean edge length ("
         << (r.noise_level_estimated ? "estimated" : "given") << ")\n";
+  if(r.flat_edge_fraction >= 0.)
+    out << "shape: " << r.flat_edge_fraction << " of the edges flat after the first schedule ("
+        << (r.smooth_surface ? "smooth surface: denoised again with the smooth-surface schedule, "
+                                   + std::to_string(r.discarded_iterations) + " iterations discarded"
+                             : "piecewise flat: kept")
+        << ")\n";
   out << "sigma_s = " << r.sigma_spatial << ", sigma_r = " << r.sigma_range << "\n";
   out << "r = " << r.neighbor_radius << " (" << r.relative_neighbor_radius << " d), v_iter = " << r.vertex_iterations
       << "\n";

@@ -63,6 +63,17 @@ struct Intrinsic_denoising_report
   /// with the stopping rule: the RMS vertex displacement from the input at the
   /// end, relative to the mean edge length
   double displacement = 0.;
+  /// the automatic mode's shape test: the fraction of interior edges with a
+  /// dihedral angle under 1 degree after its first schedule (-1: not made,
+  /// because the mode or the stopping rule is off, a parameter of the kernel
+  /// or the radius was given, or the noise level is below 0.02)
+  double flat_edge_fraction = -1.;
+  /// whether that fraction (under 0.5: not a piecewise flat surface) made the
+  /// automatic mode denoise the input again with its smooth-surface schedule;
+  /// the values above then describe that second run
+  bool smooth_surface = false;
+  /// iterations of the first schedule whose result the second run replaced
+  unsigned int discarded_iterations = 0;
   /// the constants of the stopping rule
   static constexpr double displacement_fraction = internal::Denoising::Automatic_rules::displacement_fraction;
   static constexpr double change_tolerance = internal::Denoising::Automatic_rules::change_tolerance;
@@ -228,7 +239,14 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
   once the filtered normals change by less than 0.005 degree on average from
   one iteration to the next (neither test before 10 iterations, unless the
   noise level is below 0.02: a noise-free mesh stops after one iteration).
-  The values used are returned. Explicit parameters always win; a given
+  Then a shape test: if fewer than half of the interior edges of the result
+  have a dihedral angle under 1 degree, the surface is not piecewise flat
+  (organic, curved or irregular), and the input is denoised again with the
+  smooth-surface schedule, \f$\sigma_s = \sigma_r = 1.4\f$, \f$r = 2d\f$,
+  with the same stopping rule but tested from the first iteration (the
+  progress callback then counts again from 1). The test is made only when \f$\sigma_s\f$, \f$\sigma_r\f$, the radius
+  and `number_of_iterations` are all left to the automatic mode and the noise
+  level is at least 0.02. The values used are returned. Explicit parameters always win; a given
   `number_of_iterations` is run exactly (the stopping rule is then off
   unless `stop_when_converged(true)`). These constants were fitted on the
   package's benchmark (`auto_parameters_benchmark`, 13 noisy inputs); see the
@@ -361,66 +379,114 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
     }
     return report.automatic_parameters ? choice.kernel : D::Setup_defaults();
   };
-  D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname, choose_defaults);
-  const unsigned int iterations = choose_parameter(
-      get_parameter(np, internal_np::number_of_iterations),
-      report.automatic_parameters ? choice.max_iterations : D::Intrinsic_defaults::iterations);
-  report.sigma_spatial = s.kernel.sigma_spatial;
-  report.sigma_range = s.kernel.sigma_range;
-  report.neighbor_radius = s.radius;
-  report.relative_neighbor_radius = s.centroid_distance > 0. ? s.radius / s.centroid_distance : 0.;
-  report.vertex_iterations = vertex_iterations;
-  report.maximum_iterations = iterations;
-  const auto progress = choose_parameter(get_parameter(np, internal_np::progress_callback), D::No_progress());
-
-  // the vertex update reads the vertices of nearby faces: number them as the
-  // (Morton-ordered) faces use them; the points go back in input order
-  if(!s.mesh.input_face.empty())
-    D::reorder_vertices_for_locality(s.mesh);
-  const std::vector<char> fixed = s.mesh.vertex_values_from_input_order(maps.constrained(tmesh));
-  D::Fold_safeguard guard;
-  guard.enabled = choose_parameter(get_parameter(np, internal_np::prevent_folds), true);
-  const std::vector<D::Vec3> input_normals = guard.enabled ? s.input_faces.normals : std::vector<D::Vec3>();
-  guard.reference = &input_normals;
-
-  std::vector<D::Vec3>& points = s.mesh.points;
-  const std::vector<D::Vec3> input_points = stop_rule ? points : std::vector<D::Vec3>();
-  const double target_displacement = D::Automatic_rules::displacement_fraction * report.noise_level;
-  D::Face_data current = std::move(s.input_faces);
-  std::vector<D::Vec3> filtered, previous, centroids, next;
-  report.stop_reason = Intrinsic_stop_reason::ITERATION_LIMIT;
-  for(unsigned int it = 0; it < iterations; ++it)
+  // One denoising from the input with the defaults `choose(mesh)` for the
+  // parameters not given, the stopping rule not tested before
+  // `min_iterations`; the report describes it. Returns the vertices and
+  // the last filtered normals in input order, and with `measure_shape` the
+  // flat-edge fraction of the result (Automatic_rules).
+  struct Run
   {
-    if(it > 0)
-      D::compute_face_data<ConcurrencyTag>(s.mesh, points, current);
-    D::intrinsic_filter_pass<ConcurrencyTag>(s.paths, current.normals, current.areas, s.kernel, filtered);
-    D::update_vertices<ConcurrencyTag>(s.mesh, points, filtered, fixed, vertex_iterations, centroids, next, &guard);
-    report.iterations = it + 1;
-    progress(std::size_t(it + 1), std::size_t(iterations));
-    if(!stop_rule || it + 1 == iterations)
-      continue;
-    // the stopping rule (not before min_iterations unless there is no noise)
-    if(it + 1 >= D::Automatic_rules::min_iterations || report.noise_level < D::Automatic_rules::min_noise)
+    std::vector<D::Vec3> points, normals;
+    double flat_fraction = -1.;
+  };
+  auto run = [&](const auto& choose, bool measure_shape, unsigned int min_iterations) {
+    D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname, choose);
+    const unsigned int iterations = choose_parameter(
+        get_parameter(np, internal_np::number_of_iterations),
+        report.automatic_parameters ? choice.max_iterations : D::Intrinsic_defaults::iterations);
+    report.sigma_spatial = s.kernel.sigma_spatial;
+    report.sigma_range = s.kernel.sigma_range;
+    report.neighbor_radius = s.radius;
+    report.relative_neighbor_radius = s.centroid_distance > 0. ? s.radius / s.centroid_distance : 0.;
+    report.vertex_iterations = vertex_iterations;
+    report.maximum_iterations = iterations;
+    report.displacement = 0.;
+    const auto progress = choose_parameter(get_parameter(np, internal_np::progress_callback), D::No_progress());
+
+    // the vertex update reads the vertices of nearby faces: number them as the
+    // (Morton-ordered) faces use them; the points go back in input order
+    if(!s.mesh.input_face.empty())
+      D::reorder_vertices_for_locality(s.mesh);
+    const std::vector<char> fixed = s.mesh.vertex_values_from_input_order(maps.constrained(tmesh));
+    D::Fold_safeguard guard;
+    guard.enabled = choose_parameter(get_parameter(np, internal_np::prevent_folds), true);
+    const std::vector<D::Vec3> input_normals = guard.enabled ? s.input_faces.normals : std::vector<D::Vec3>();
+    guard.reference = &input_normals;
+
+    std::vector<D::Vec3>& points = s.mesh.points;
+    const std::vector<D::Vec3> input_points = stop_rule ? points : std::vector<D::Vec3>();
+    const double target_displacement = D::Automatic_rules::displacement_fraction * report.noise_level;
+    D::Face_data current = std::move(s.input_faces);
+    std::vector<D::Vec3> filtered, previous, centroids, next;
+    report.stop_reason = Intrinsic_stop_reason::ITERATION_LIMIT;
+    for(unsigned int it = 0; it < iterations; ++it)
     {
-      report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
-      if(report.displacement >= target_displacement)
+      if(it > 0)
+        D::compute_face_data<ConcurrencyTag>(s.mesh, points, current);
+      D::intrinsic_filter_pass<ConcurrencyTag>(s.paths, current.normals, current.areas, s.kernel, filtered);
+      D::update_vertices<ConcurrencyTag>(s.mesh, points, filtered, fixed, vertex_iterations, centroids, next, &guard);
+      report.iterations = it + 1;
+      progress(std::size_t(it + 1), std::size_t(iterations));
+      if(!stop_rule || it + 1 == iterations)
+        continue;
+      // the stopping rule (not before min_iterations unless there is no noise)
+      if(it + 1 >= min_iterations || report.noise_level < D::Automatic_rules::min_noise)
       {
-        report.stop_reason = Intrinsic_stop_reason::NOISE_LEVEL_REACHED;
-        break;
+        report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
+        if(report.displacement >= target_displacement)
+        {
+          report.stop_reason = Intrinsic_stop_reason::NOISE_LEVEL_REACHED;
+          break;
+        }
+        if(!previous.empty() && D::mean_angle_degrees(filtered, previous) < D::Automatic_rules::change_tolerance)
+        {
+          report.stop_reason = Intrinsic_stop_reason::CONVERGED;
+          break;
+        }
       }
-      if(!previous.empty() && D::mean_angle_degrees(filtered, previous) < D::Automatic_rules::change_tolerance)
-      {
-        report.stop_reason = Intrinsic_stop_reason::CONVERGED;
-        break;
-      }
+      previous.swap(filtered); // the next pass overwrites all of `filtered`
     }
-    previous.swap(filtered); // the next pass overwrites all of `filtered`
+    if(stop_rule)
+      report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
+    Run r;
+    if(measure_shape)
+    {
+      D::compute_face_data<ConcurrencyTag>(s.mesh, points, current);
+      r.flat_fraction = D::flat_edge_fraction<ConcurrencyTag>(s.mesh, current.normals, D::Automatic_rules::flat_angle);
+    }
+    r.points = s.mesh.vertex_values_in_input_order(points);
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
+      r.normals = s.mesh.in_input_order(filtered);
+    return r;
+  };
+
+  // The shape test of the automatic mode (Automatic_rules): only when the
+  // kernel, the radius and the number of iterations are all left to it (the
+  // smooth-surface schedule relies on the stopping rule), and there is noise
+  // to remove.
+  constexpr bool kernel_or_radius_given =
+      !is_default_parameter<NamedParameters, internal_np::sigma_spatial_t>::value ||
+      !is_default_parameter<NamedParameters, internal_np::sigma_range_t>::value ||
+      !is_default_parameter<NamedParameters, internal_np::neighbor_radius_t>::value ||
+      !is_default_parameter<NamedParameters, internal_np::relative_neighbor_radius_t>::value;
+  const bool shape_test = report.automatic_parameters && stop_rule && !kernel_or_radius_given;
+  Run result = run(choose_defaults, shape_test, D::Automatic_rules::min_iterations);
+  if(shape_test && report.noise_level >= D::Automatic_rules::min_noise)
+  {
+    report.flat_edge_fraction = result.flat_fraction;
+    if(result.flat_fraction >= 0. && result.flat_fraction < D::Automatic_rules::min_flat_fraction)
+    {
+      report.smooth_surface = true;
+      report.discarded_iterations = report.iterations;
+      D::Setup_defaults smooth;
+      smooth.sigma_spatial = smooth.sigma_range = D::Automatic_rules::smooth_sigma;
+      smooth.relative_radius = D::Automatic_rules::smooth_relative_radius;
+      result = run([&smooth](const D::Flat_mesh&) { return smooth; }, false, D::Automatic_rules::smooth_min_iterations);
+    }
   }
-  if(stop_rule)
-    report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
-  maps.write_points(tmesh, s.mesh.vertex_values_in_input_order(points));
+  maps.write_points(tmesh, result.points);
   if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
-    maps.write_face_vectors(tmesh, s.mesh.in_input_order(filtered), get_parameter(np, internal_np::face_normal));
+    maps.write_face_vectors(tmesh, result.normals, get_parameter(np, internal_np::face_normal));
   return report;
 }
 
