@@ -244,9 +244,10 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
   (organic, curved or irregular), and the input is denoised again with the
   smooth-surface schedule, \f$\sigma_s = \sigma_r = 1.4\f$, \f$r = 2d\f$,
   with the same stopping rule but tested from the first iteration (the
-  progress callback then counts again from 1). The test is made only when \f$\sigma_s\f$, \f$\sigma_r\f$, the radius
-  and `number_of_iterations` are all left to the automatic mode and the noise
-  level is at least 0.02. The values used are returned. Explicit parameters always win; a given
+  progress callback then counts again from 1). The test is made only when
+  \f$\sigma_s\f$, \f$\sigma_r\f$, the radius and `number_of_iterations`
+  are all left to the automatic mode and the noise level is at least 0.02.
+  The values used are returned. Explicit parameters always win; a given
   `number_of_iterations` is run exactly (the stopping rule is then off
   unless `stop_when_converged(true)`). These constants were fitted on the
   package's benchmark (`auto_parameters_benchmark`, 13 noisy inputs); see the
