@@ -95,11 +95,14 @@ DESCRIPTION
     By default the parameters are automatic: the noise level of INPUT is
     estimated (or given with --noise-level), sigma_s, sigma_r and r are
     derived from it, and the iterations stop when the vertices have moved by
-    about the noise level or the filtered normals no longer change. Only the
-    options given on the command line replace the automatic choices; --fixed
-    uses the paper's fixed parameters instead (k = 30, v = 2, r = 4d,
-    sigma = 0.4, no stopping rule). After the run, the parameters used, the
-    noise level and why the iterations stopped are printed.
+    about the noise level or the filtered normals no longer change. If the
+    result is not piecewise flat (under half of its edges flatter than 1
+    degree: an organic or irregular surface), INPUT is denoised again with a
+    wide kernel on a small radius (sigma 1.4, r = 2d). Only the options given
+    on the command line replace the automatic choices; --fixed uses the
+    paper's fixed parameters instead (k = 30, v = 2, r = 4d, sigma = 0.4, no
+    stopping rule). After the run, the parameters used, the noise level, the
+    shape test and why the iterations stopped are printed.
 
     Neighbourhoods and paths are computed once, on the input. Paths follow the
     paper's square pattern (section 4) by default; --paths chooses the exact
