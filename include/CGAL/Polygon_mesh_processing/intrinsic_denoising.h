@@ -237,7 +237,7 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
   stopping rule that needs no ground truth ends the iterations once the RMS
   vertex displacement from the input reaches 0.95 times the noise level, or
   once the filtered normals change by less than 0.005 degree on average from
-  one iteration to the next (neither test before 10 iterations, unless the
+  one iteration to the next (neither test before 20 iterations, unless the
   noise level is below 0.02: a noise-free mesh stops after one iteration).
   Then a shape test: if fewer than half of the interior edges of the result
   have a dihedral angle under 1 degree, the surface is not piecewise flat
