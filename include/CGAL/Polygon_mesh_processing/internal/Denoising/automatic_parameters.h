@@ -62,9 +62,9 @@ struct Automatic_rules
   static constexpr double min_noise = 0.02;
   // The shape test, made on the result of the schedule above (which keeps
   // sharp edges): a piecewise flat (CAD-like) result has most of its interior
-  // edges at a dihedral angle under flat_angle degrees (0.69 to 0.97 of them
+  // edges at a dihedral angle under flat_angle degrees (0.78 to 0.97 of them
   // on the benchmark's CAD inputs); a smooth curved (organic) or irregular
-  // surface few (0.14 to 0.27). Below min_flat_fraction the mesh is denoised
+  // surface few (0.16 to 0.30). Below min_flat_fraction the mesh is denoised
   // again from its input with the smooth-surface schedule: a wide kernel on a
   // small radius (almost a Gaussian smoothing of the normals), with the same
   // stopping rule.
