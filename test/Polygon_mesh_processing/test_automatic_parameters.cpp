@@ -17,7 +17,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -208,7 +207,7 @@ TEST(AutomaticParameters, SmoothSurfaceScheduleOnCurvedMesh)
   EXPECT_NE(r.stop_reason, PMP::Intrinsic_stop_reason::ITERATION_LIMIT);
 
   Mesh b = noisy;
-  const double first_sigma = std::clamp(0.2 + r.noise_level, 0.2, 1.4);
+  const double first_sigma = D::automatic_choice(r.noise_level).kernel.sigma_spatial;
   const auto rb = PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(
       b, CGAL::parameters::sigma_spatial(first_sigma).sigma_range(first_sigma));
   EXPECT_EQ(rb.flat_edge_fraction, -1.);

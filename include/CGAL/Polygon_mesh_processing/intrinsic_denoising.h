@@ -371,10 +371,20 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
   D::Automatic_choice choice;
   const bool need_noise = report.automatic_parameters || stop_rule;
   auto choose_defaults = [&](const D::Flat_mesh& mesh) {
-    report.mean_edge_length = D::mean_edge_length<ConcurrencyTag>(mesh);
+    if(need_noise && given_noise < 0.)
+    {
+      // the estimate measures the mean edge length too
+      const D::Noise_estimate estimate = D::estimate_noise<ConcurrencyTag>(mesh);
+      report.mean_edge_length = estimate.mean_edge_length;
+      report.noise_level = estimate.relative_noise;
+    }
+    else
+    {
+      report.mean_edge_length = D::mean_edge_length<ConcurrencyTag>(mesh);
+      report.noise_level = need_noise ? given_noise : 0.;
+    }
     if(need_noise)
     {
-      report.noise_level = given_noise >= 0. ? given_noise : D::estimate_noise<ConcurrencyTag>(mesh).relative_noise;
       report.noise_level_estimated = given_noise < 0.;
       choice = D::automatic_choice(report.noise_level);
     }
@@ -383,8 +393,9 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
   // One denoising from the input with the defaults `choose(mesh)` for the
   // parameters not given, the stopping rule not tested before
   // `min_iterations`; the report describes it. Returns the vertices and
-  // the last filtered normals in input order, and with `measure_shape` the
-  // flat-edge fraction of the result (Automatic_rules).
+  // the last filtered normals in input order, and with `measure_shape`, if
+  // there is noise to remove, the flat-edge fraction of the result
+  // (Automatic_rules).
   struct Run
   {
     std::vector<D::Vec3> points, normals;
@@ -450,7 +461,7 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
     if(stop_rule)
       report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
     Run r;
-    if(measure_shape)
+    if(measure_shape && report.noise_level >= D::Automatic_rules::min_noise)
     {
       D::compute_face_data<ConcurrencyTag>(s.mesh, points, current);
       r.flat_fraction = D::flat_edge_fraction<ConcurrencyTag>(s.mesh, current.normals, D::Automatic_rules::flat_angle);
@@ -472,9 +483,9 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
       !is_default_parameter<NamedParameters, internal_np::relative_neighbor_radius_t>::value;
   const bool shape_test = report.automatic_parameters && stop_rule && !kernel_or_radius_given;
   Run result = run(choose_defaults, shape_test, D::Automatic_rules::min_iterations);
-  if(shape_test && report.noise_level >= D::Automatic_rules::min_noise)
+  if(shape_test)
   {
-    report.flat_edge_fraction = result.flat_fraction;
+    report.flat_edge_fraction = result.flat_fraction; // -1 if not measured
     if(result.flat_fraction >= 0. && result.flat_fraction < D::Automatic_rules::min_flat_fraction)
     {
       report.smooth_surface = true;

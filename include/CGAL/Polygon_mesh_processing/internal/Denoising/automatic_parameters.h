@@ -93,29 +93,16 @@ double flat_edge_fraction(const Flat_mesh& m, const std::vector<Vec3>& normals, 
   for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
     for(std::size_t f = b; f < e; ++f)
     {
-      const auto& t = m.triangles[f];
-      const Vec3& nf_ = normals[f];
-      if(squared_norm(nf_) == 0.)
+      const Vec3& n = normals[f];
+      if(squared_norm(n) == 0.)
         continue;
-      for(int k = 0; k < 3; ++k)
-      {
-        const std::uint32_t a = t[k], c = t[(k + 1) % 3];
-        for(std::uint32_t q = m.vertex_face_offsets[a]; q < m.vertex_face_offsets[a + 1]; ++q)
-        {
-          const std::uint32_t g = m.vertex_faces[q];
-          if(g <= f) // each pair once, from its lower face
-            continue;
-          const auto& u = m.triangles[g];
-          if(u[0] != c && u[1] != c && u[2] != c)
-            continue;
-          const Vec3& ng = normals[g];
-          if(squared_norm(ng) == 0.)
-            continue;
-          ++total[f];
-          // unit normals: the angle is under `angle` iff the cosine is above
-          flat[f] += dot(nf_, ng) > cos_angle ? 1u : 0u;
-        }
-      }
+      for_each_edge_adjacent_face_after(m, f, [&](std::uint32_t g) {
+        if(squared_norm(normals[g]) == 0.)
+          return;
+        ++total[f];
+        // unit normals: the angle is under `angle` iff the cosine is above
+        flat[f] += dot(n, normals[g]) > cos_angle ? 1u : 0u;
+      });
     }
   });
   std::size_t flat_sum = 0, total_sum = 0;

@@ -421,6 +421,30 @@ double mean_of_face_terms(std::size_t n, const Terms& terms)
   return count == 0 ? 0. : sum / double(count);
 }
 
+// Calls fn(g) for every face g of larger index than f that shares an edge
+// with f (so that each pair of edge-adjacent faces is seen once, from its
+// lower face), edge after edge of f, in the order of the faces around the
+// edge's first vertex.
+template <typename Fn>
+void for_each_edge_adjacent_face_after(const Flat_mesh& m, std::size_t f, const Fn& fn)
+{
+  const auto& t = m.triangles[f];
+  for(int k = 0; k < 3; ++k)
+  {
+    const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+    // faces around a that also contain b
+    for(std::uint32_t i = m.vertex_face_offsets[a]; i < m.vertex_face_offsets[a + 1]; ++i)
+    {
+      const std::uint32_t g = m.vertex_faces[i];
+      if(g <= f)
+        continue;
+      const auto& u = m.triangles[g];
+      if(u[0] == b || u[1] == b || u[2] == b)
+        fn(g);
+    }
+  }
+}
+
 // Mean distance between the centroids of edge-adjacent faces: the paper's d.
 // Returns 0 if no two faces share an edge. The same value with every
 // concurrency tag.
@@ -428,21 +452,8 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag>
 double mean_adjacent_centroid_distance(const Flat_mesh& m, const Face_data& fd)
 {
   return mean_of_face_terms<ConcurrencyTag>(m.number_of_faces(), [&](std::size_t f, const auto& add) {
-    const auto& t = m.triangles[f];
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::uint32_t a = t[k], b = t[(k + 1) % 3];
-      // faces around a that also contain b, with a larger index (each pair once)
-      for(std::uint32_t i = m.vertex_face_offsets[a]; i < m.vertex_face_offsets[a + 1]; ++i)
-      {
-        const std::uint32_t g = m.vertex_faces[i];
-        if(g <= f)
-          continue;
-        const auto& u = m.triangles[g];
-        if(u[0] == b || u[1] == b || u[2] == b)
-          add(norm(fd.centroids[g] - fd.centroids[f]));
-      }
-    }
+    for_each_edge_adjacent_face_after(m, f,
+                                      [&](std::uint32_t g) { add(norm(fd.centroids[g] - fd.centroids[f])); });
   });
 }
 

@@ -81,10 +81,12 @@ struct Square_pattern_frame
 // regions.
 struct Square_pattern_scratch
 {
+  // ((distance, input index), face) of the nodes of a large region
+  typedef std::vector<std::pair<std::pair<double, std::uint32_t>, std::uint32_t>> Sorted;
   std::vector<std::int32_t> region;
   std::vector<double> distance, by_region_distance;
   std::vector<std::uint32_t> by_region_input, by_region_face;
-  std::vector<std::pair<std::pair<double, std::uint32_t>, std::uint32_t>> sorted;
+  Sorted sorted;
 };
 
 // Regions of more nodes than this are sorted by comparisons; smaller ones
@@ -100,7 +102,7 @@ constexpr std::size_t square_pattern_counting_max = 128;
 // with this). Larger regions are sorted, in `sorted`.
 inline void sort_square_pattern_region(const double* distance, const std::uint32_t* input,
                                        const std::uint32_t* faces, std::size_t n, std::uint32_t* out,
-                                       std::vector<std::pair<std::pair<double, std::uint32_t>, std::uint32_t>>& sorted)
+                                       Square_pattern_scratch::Sorted& sorted)
 {
   if(n > square_pattern_counting_max)
   {
@@ -169,7 +171,6 @@ inline std::array<std::uint32_t, 6> square_pattern_tree(const Flat_mesh& m, cons
   double* by_region_distance = s.by_region_distance.data();
   std::uint32_t* by_region_input = s.by_region_input.data();
   std::uint32_t* by_region_face = s.by_region_face.data();
-  const std::uint32_t* input_face = m.input_face.empty() ? nullptr : m.input_face.data();
   for(std::size_t k = 0; k < n; ++k)
   {
     const int r = region[k];
@@ -177,7 +178,7 @@ inline std::array<std::uint32_t, 6> square_pattern_tree(const Flat_mesh& m, cons
       continue;
     const std::uint32_t at = fill[r]++;
     by_region_distance[at] = distance[k];
-    by_region_input[at] = input_face ? input_face[nb[k]] : nb[k];
+    by_region_input[at] = m.input_index(nb[k]);
     by_region_face[at] = nb[k];
   }
   const std::size_t first = out.size();
