@@ -269,6 +269,11 @@ TEST(SquarePattern, DegenerateFaceFallsBackToDirectPaths)
   h.mesh.points[2] = {2., 0., 0.}; // face 0 becomes a zero-area (collinear) triangle
   D::compute_face_data<CGAL::Sequential_tag>(h.mesh, h.mesh.points, h.faces);
   ASSERT_EQ(D::squared_norm(h.faces.normals[0]), 0.);
+  // tilt two neighbours so that their weights matter in the passes below
+  h.mesh.points[3 * 1 + 2][2] += 1e-3;
+  h.mesh.points[3 * 3 + 1][2] -= 2e-3;
+  D::compute_face_data<CGAL::Sequential_tag>(h.mesh, h.mesh.points, h.faces);
+  std::vector<std::vector<D::Vec3>> passes;
   for(const std::size_t compact_min_nodes : {std::size_t(0), D::square_pattern_compact_min_nodes})
   {
     const D::Path_forest forest = D::square_pattern_paths(h.mesh, h.faces, h.neighbors, compact_min_nodes);
@@ -277,7 +282,19 @@ TEST(SquarePattern, DegenerateFaceFallsBackToDirectPaths)
     ASSERT_EQ(forest.offsets[1] - forest.offsets[0], 3u);
     for(std::uint32_t k = forest.offsets[0]; k < forest.offsets[1]; ++k)
       EXPECT_EQ(parent[k], D::Path_forest::root);
+    D::Intrinsic_kernel kernel;
+    kernel.sigma_range = 0.001;
+    passes.emplace_back();
+    D::intrinsic_filter_pass<CGAL::Sequential_tag>(forest, h.faces.normals, h.faces.areas, kernel, passes.back());
+    passes.emplace_back();
+    D::intrinsic_filter_pass_generic<CGAL::Sequential_tag>(forest, h.faces.normals, h.faces.areas, kernel,
+                                                           passes.back());
   }
+  // the same normals from every form and kernel (the AVX2 kernel on region
+  // sizes takes this face's parents one per node)
+  ASSERT_EQ(passes.size(), 4u);
+  for(std::size_t p = 1; p < passes.size(); ++p)
+    EXPECT_EQ(passes[p], passes[0]) << "pass " << p;
 }
 
 TEST(SquarePattern, FandiskForestIsWellFormed)
@@ -496,8 +513,8 @@ TEST(SquarePattern, ParentsFromRegionSizes)
   }
 }
 
-// The forest with its parents kept as region sizes (compact, used for large
-// forests, forced here) and the one with a parent per node are the same
+// The forest with its parents kept as region sizes (compact: the default
+// where the AVX2 kernel runs, else for large forests; forced here) and the one with a parent per node are the same
 // trees, and every filter pass (dispatched, generic, SSE2, AVX2) gives
 // bitwise the same normals on both; the sequential and parallel builds agree.
 TEST(SquarePattern, CompactForestGivesTheSameTreesAndPasses)
@@ -509,8 +526,12 @@ TEST(SquarePattern, CompactForestGivesTheSameTreesAndPasses)
   const D::Flat_mesh& m = setup.m;
   const D::Face_data& fd = setup.fd;
   const double r = setup.r;
-  const D::Path_forest stored = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r);
+  const D::Path_forest stored =
+      D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r, D::square_pattern_compact_min_nodes);
   const D::Path_forest compact = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r, 0);
+  // the default keeps the region sizes exactly where the AVX2 kernel runs
+  EXPECT_EQ(D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r).square_regions.empty(),
+            !D::filter_pass_prefers_square_regions());
   ASSERT_TRUE(stored.square_regions.empty());
   ASSERT_EQ(compact.square_regions.size(), m.number_of_faces());
   EXPECT_TRUE(compact.parent.empty());

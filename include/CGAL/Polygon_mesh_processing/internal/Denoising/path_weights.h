@@ -427,6 +427,99 @@ CGAL_PMP_DENOISING_AVX2_TARGET inline void intrinsic_filter_faces_l1_avx2(
   }
 }
 
+// The AVX2 kernel for square-pattern trees kept as region sizes: within a
+// region, the nodes of ranks (q-1)^2 + 1 .. q^2 (a "shell") all hang from
+// the node of rank (q-1)^2 (face i for q = 1), so the parent's normal and
+// sums are loaded once per shell instead of once per node, and no parent
+// index is read. The operations on each value are those of
+// intrinsic_filter_faces_l1_avx2, in its order (bitwise the same result).
+CGAL_PMP_DENOISING_AVX2_TARGET inline void intrinsic_filter_faces_l1_avx2_shells(
+    const Path_forest& forest, const std::vector<Vec3>& normals, const std::vector<double>& areas, double a,
+    double b, bool include_self, std::size_t ib, std::size_t ie, double* sums, double* weight,
+    std::int32_t* parent_scratch, std::vector<Vec3>& out)
+{
+  const Exp_table& table = Exp_table::instance();
+  const __m256d va = _mm256_set1_pd(a), vb = _mm256_set1_pd(b);
+  const __m256d sign = _mm256_set1_pd(-0.);
+  const Vec3* nrm = normals.data();
+  for(std::size_t i = ib; i < ie; ++i)
+  {
+    const std::uint32_t nb = forest.offsets[i], ne = forest.offsets[i + 1];
+    const std::uint32_t* face = forest.face.data() + nb;
+    const std::uint32_t count = ne - nb;
+    const Vec3& ni = nrm[i];
+    const std::array<std::uint32_t, 6>& regions = forest.square_regions[i];
+    std::uint32_t start = 0;
+    for(const std::uint32_t size : regions)
+    {
+      std::uint32_t lo = 0; // first local rank - 1 of the shell
+      for(std::uint32_t q = 1; lo < size; ++q)
+      {
+        const std::uint32_t hi = (std::min)(q * q, size);
+        // the parent: face i for the first shell, else rank (q-1)^2
+        const std::int32_t p = q == 1 ? -1 : std::int32_t(start + lo) - 1;
+        const Vec3& np = nrm[p < 0 ? std::uint32_t(i) : face[p]];
+        const __m128d ps = _mm_loadu_pd(sums + 2 * (p + 1));
+        const __m256d ps2 = _mm256_set_m128d(ps, ps);
+        const __m256d px = _mm256_set_pd(ni[0], np[0], ni[0], np[0]);
+        const __m256d py = _mm256_set_pd(ni[1], np[1], ni[1], np[1]);
+        const __m256d pz = _mm256_set_pd(ni[2], np[2], ni[2], np[2]);
+        std::uint32_t k = start + lo;
+        const std::uint32_t end = start + hi;
+        for(; k + 1 < end; k += 2)
+        {
+          const Vec3& n0 = nrm[face[k]];
+          const Vec3& n1 = nrm[face[k + 1]];
+          const __m256d dx = _mm256_sub_pd(_mm256_set_pd(n1[0], n1[0], n0[0], n0[0]), px);
+          const __m256d dy = _mm256_sub_pd(_mm256_set_pd(n1[1], n1[1], n0[1], n0[1]), py);
+          const __m256d dz = _mm256_sub_pd(_mm256_set_pd(n1[2], n1[2], n0[2], n0[2]), pz);
+          const __m256d sq = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+                                           _mm256_mul_pd(dz, dz));
+          _mm256_storeu_pd(sums + 2 * (k + 1), _mm256_add_pd(ps2, _mm256_sqrt_pd(sq)));
+        }
+        if(k < end)
+        {
+          const Vec3& nk = nrm[face[k]];
+          const __m128d dx = _mm_sub_pd(_mm_set1_pd(nk[0]), _mm256_castpd256_pd128(px));
+          const __m128d dy = _mm_sub_pd(_mm_set1_pd(nk[1]), _mm256_castpd256_pd128(py));
+          const __m128d dz = _mm_sub_pd(_mm_set1_pd(nk[2]), _mm256_castpd256_pd128(pz));
+          const __m128d sq = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
+          _mm_storeu_pd(sums + 2 * (k + 1), _mm_add_pd(ps, _mm_sqrt_pd(sq)));
+        }
+        lo = hi;
+      }
+      start += size;
+    }
+    if(start != count) // degenerate face i: every node hangs from i
+    {
+      const std::int32_t* parent = forest.parents(i, parent_scratch);
+      for(std::uint32_t k = 0; k < count; ++k)
+      {
+        const std::int32_t p = parent[k];
+        const Vec3& nk = nrm[face[k]];
+        const Vec3& nf = nrm[p < 0 ? std::uint32_t(i) : face[p]];
+        const __m128d dx = _mm_sub_pd(_mm_set1_pd(nk[0]), _mm_set_pd(ni[0], nf[0]));
+        const __m128d dy = _mm_sub_pd(_mm_set1_pd(nk[1]), _mm_set_pd(ni[1], nf[1]));
+        const __m128d dz = _mm_sub_pd(_mm_set1_pd(nk[2]), _mm_set_pd(ni[2], nf[2]));
+        const __m128d sq = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
+        _mm_storeu_pd(sums + 2 * (k + 1), _mm_add_pd(_mm_loadu_pd(sums + 2 * (p + 1)), _mm_sqrt_pd(sq)));
+      }
+    }
+    std::uint32_t k;
+    for(k = count; k % 4 != 0; ++k)
+      _mm_storeu_pd(sums + 2 * (k + 1), _mm_setzero_pd());
+    for(k = 0; k < count; k += 4)
+    {
+      const __m256d v0 = _mm256_loadu_pd(sums + 2 * (k + 1)), v1 = _mm256_loadu_pd(sums + 2 * (k + 3));
+      const __m256d sp = _mm256_unpacklo_pd(v0, v1), rg = _mm256_unpackhi_pd(v0, v1);
+      const __m256d x = _mm256_sub_pd(_mm256_mul_pd(_mm256_xor_pd(_mm256_mul_pd(sp, sp), sign), va),
+                                      _mm256_mul_pd(_mm256_mul_pd(rg, rg), vb));
+      _mm256_storeu_pd(weight + k, _mm256_permute4x64_pd(exp_nonpositive_4(x, table), 0xD8));
+    }
+    out[i] = weighted_normal_average(forest, i, nb, ne, weight, normals, areas, include_self);
+  }
+}
+
 template <typename ConcurrencyTag>
 void intrinsic_filter_pass_l1_avx2(const Path_forest& forest, const std::vector<Vec3>& normals,
                                    const std::vector<double>& areas, const Intrinsic_kernel& kernel,
@@ -438,11 +531,27 @@ void intrinsic_filter_pass_l1_avx2(const Path_forest& forest, const std::vector<
   for_each_chunk<ConcurrencyTag>(forest.number_of_faces(), [&](std::size_t ib, std::size_t ie) {
     std::vector<double> sums(2 * (max_nodes + 4), 0.), roots(2 * (max_nodes + 2)), weight(max_nodes + 4);
     std::vector<std::int32_t> parent_scratch(max_nodes + Square_pattern_parent_table::width);
-    intrinsic_filter_faces_l1_avx2(forest, normals, areas, a, b, kernel.include_self, ib, ie, sums.data(),
-                                   roots.data(), weight.data(), parent_scratch.data(), out);
+    if(forest.square_regions.empty())
+      intrinsic_filter_faces_l1_avx2(forest, normals, areas, a, b, kernel.include_self, ib, ie, sums.data(),
+                                     roots.data(), weight.data(), parent_scratch.data(), out);
+    else
+      intrinsic_filter_faces_l1_avx2_shells(forest, normals, areas, a, b, kernel.include_self, ib, ie,
+                                            sums.data(), weight.data(), parent_scratch.data(), out);
   });
 }
 #endif
+
+// Whether intrinsic_filter_pass is fastest on square-pattern forests that
+// keep their parents as region sizes (the AVX2 kernel, see
+// intrinsic_filter_faces_l1_avx2_shells) rather than one per node.
+inline bool filter_pass_prefers_square_regions()
+{
+#ifdef CGAL_PMP_DENOISING_AVX2
+  return cpu_has_avx2();
+#else
+  return false;
+#endif
+}
 
 // One pass of eq. 8 on face normals: out[i] = normalised sum over the
 // weighted nodes j of face i's tree of A_j g(d^s) g(d^r) n_j (plus A_i n_i
