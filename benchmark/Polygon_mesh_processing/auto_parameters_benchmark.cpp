@@ -293,11 +293,13 @@ int main(int argc, char** argv)
     char schedule[64];
     if(r.smooth_surface)
       std::snprintf(schedule, sizeof schedule, "smooth (after %u)", r.discarded_iterations);
+    else if(r.flat_faced)
+      std::snprintf(schedule, sizeof schedule, "flat-faced (after %u)", r.discarded_iterations);
     else
       std::snprintf(schedule, sizeof schedule, "flat");
     // what the first schedule alone gives (its sigma given: no shape test)
     std::string first = "(kept)";
-    if(r.smooth_surface)
+    if(r.smooth_surface || r.flat_faced)
     {
       Mesh f = in.noisy;
       const double sigma = D::automatic_choice(r.noise_level).kernel.sigma_spatial;

@@ -98,7 +98,9 @@ DESCRIPTION
     about the noise level or the filtered normals no longer change. If the
     result is not piecewise flat (under half of its edges flatter than 1
     degree: an organic or irregular surface), INPUT is denoised again with a
-    wide kernel on a small radius (sigma 1.4, r = 2d). Only the options given
+    wide kernel on a small radius (sigma 1.4, r = 2d); if it is made of large
+    flat faces (at least 90% of its edges that flat), INPUT is denoised again
+    with more smoothing (r = 8d, up to 150 iterations). Only the options given
     on the command line replace the automatic choices; --fixed uses the
     paper's fixed parameters instead (k = 30, v = 2, r = 4d, sigma = 0.4, no
     stopping rule). After the run, the parameters used, the noise level, the

@@ -268,6 +268,8 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
     out << "shape: " << r.flat_edge_fraction << " of the edges flat after the first schedule ("
         << (r.smooth_surface ? "smooth surface: denoised again with the smooth-surface schedule, "
                                    + std::to_string(r.discarded_iterations) + " iterations discarded"
+            : r.flat_faced   ? "large flat faces: denoised again with the flat-faced schedule, "
+                                   + std::to_string(r.discarded_iterations) + " iterations discarded"
                              : "piecewise flat: kept")
         << ")\n";
   out << "sigma_s = " << r.sigma_spatial << ", sigma_r = " << r.sigma_range << "\n";

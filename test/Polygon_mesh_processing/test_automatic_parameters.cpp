@@ -149,7 +149,9 @@ TEST(AutomaticParameters, NoisyFandiskAutomaticMode)
   EXPECT_LT(PMP::face_normal_error(m, fandisk()), 2.5);
   // piecewise flat: the shape test keeps the first schedule
   EXPECT_GT(r.flat_edge_fraction, D::Automatic_rules::min_flat_fraction);
+  EXPECT_LT(r.flat_edge_fraction, D::Automatic_rules::flat_faced_fraction); // curved parts: not flat-faced
   EXPECT_FALSE(r.smooth_surface);
+  EXPECT_FALSE(r.flat_faced);
   EXPECT_EQ(r.discarded_iterations, 0u);
 }
 
@@ -226,6 +228,40 @@ TEST(AutomaticParameters, SmoothSurfaceScheduleOnCurvedMesh)
   const double s = D::automatic_choice(rc.noise_level).kernel.sigma_spatial;
   PMP::intrinsic_denoising(clean_first, CGAL::parameters::sigma_spatial(s).sigma_range(s));
   EXPECT_LT(PMP::face_normal_error(clean, reference), PMP::face_normal_error(clean_first, reference));
+}
+
+// A surface of large flat faces (cube(12), sigma_E 0.2): nearly every edge
+// of the first schedule's result is flat, so the automatic mode denoises the
+// input again with the flat-faced schedule (the first schedule's sigma, r 8d,
+// up to 150 iterations), which gives a much lower E_n than the first
+// schedule alone, and keeps the cube's edges: no face normal ends far from
+// its axis.
+TEST(AutomaticParameters, FlatFacedScheduleOnCube)
+{
+  const Mesh reference = denoising_test::cube<Mesh>(12);
+  Mesh noisy = reference;
+  PMP::add_gaussian_noise(noisy, 0.2, CGAL::parameters::random_seed(1));
+  Mesh a = noisy;
+  const auto r = PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(a);
+  EXPECT_TRUE(r.flat_faced);
+  EXPECT_FALSE(r.smooth_surface);
+  EXPECT_GE(r.flat_edge_fraction, D::Automatic_rules::flat_faced_fraction);
+  EXPECT_GT(r.discarded_iterations, 0u);
+  const double first_sigma = D::automatic_choice(r.noise_level).kernel.sigma_spatial;
+  EXPECT_EQ(r.sigma_spatial, first_sigma);
+  EXPECT_NEAR(r.relative_neighbor_radius, D::Automatic_rules::flat_faced_relative_radius, 1e-12);
+  EXPECT_EQ(r.maximum_iterations, D::Automatic_rules::flat_faced_max_iterations);
+  EXPECT_GT(r.iterations, r.discarded_iterations);
+  EXPECT_NE(r.stop_reason, PMP::Intrinsic_stop_reason::NOISE_LEVEL_REACHED); // the displacement test is off
+
+  Mesh b = noisy;
+  const auto rb = PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(
+      b, CGAL::parameters::sigma_spatial(first_sigma).sigma_range(first_sigma));
+  EXPECT_FALSE(rb.flat_faced);
+  EXPECT_EQ(rb.iterations, r.discarded_iterations); // the same first schedule
+  const double e_auto = PMP::face_normal_error(a, reference), e_first = PMP::face_normal_error(b, reference);
+  EXPECT_LT(e_auto, 0.6 * e_first) << e_auto << " " << e_first;
+  EXPECT_LT(max_normal_angle(a, reference), 5.);
 }
 
 // Every explicit parameter overrides the automatic choice; a given

@@ -72,6 +72,10 @@ struct Intrinsic_denoising_report
   /// automatic mode denoise the input again with its smooth-surface schedule;
   /// the values above then describe that second run
   bool smooth_surface = false;
+  /// whether that fraction (at least 0.9: a surface of large flat faces) made
+  /// the automatic mode denoise the input again with its flat-faced schedule;
+  /// the values above then describe that second run
+  bool flat_faced = false;
   /// iterations of the first schedule whose result the second run replaced
   unsigned int discarded_iterations = 0;
   /// the constants of the stopping rule
@@ -244,7 +248,12 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
   (organic, curved or irregular), and the input is denoised again with the
   smooth-surface schedule, \f$\sigma_s = \sigma_r = 1.4\f$, \f$r = 2d\f$,
   with the same stopping rule but tested from the first iteration (the
-  progress callback then counts again from 1). The test is made only when
+  progress callback then counts again from 1). If at least 90% of them are
+  that flat, the surface is made of large flat faces, and the input is
+  denoised again with the flat-faced schedule: the first schedule's
+  \f$\sigma\f$, \f$r = 8d\f$, up to 150 iterations, stopped earlier only if
+  the filtered normals change by less than 0.0002 degree on average (about
+  14 times the first schedule's time). The test is made only when
   \f$\sigma_s\f$, \f$\sigma_r\f$, the radius and `number_of_iterations`
   are all left to the automatic mode and the noise level is at least 0.02.
   The values used are returned. Explicit parameters always win; a given
@@ -401,11 +410,17 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
     std::vector<D::Vec3> points, normals;
     double flat_fraction = -1.;
   };
-  auto run = [&](const auto& choose, bool measure_shape, unsigned int min_iterations) {
+  // `max_iterations` (if not 0) replaces the automatic mode's limit, and
+  // without `displacement_test` only the convergence of the normals (under
+  // `change_tolerance`) stops.
+  auto run = [&](const auto& choose, bool measure_shape, unsigned int min_iterations, unsigned int max_iterations = 0,
+                 bool displacement_test = true,
+                 double change_tolerance = D::Automatic_rules::change_tolerance) {
     D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname, choose);
     const unsigned int iterations = choose_parameter(
         get_parameter(np, internal_np::number_of_iterations),
-        report.automatic_parameters ? choice.max_iterations : D::Intrinsic_defaults::iterations);
+        report.automatic_parameters ? (max_iterations > 0 ? max_iterations : choice.max_iterations)
+                                    : D::Intrinsic_defaults::iterations);
     report.sigma_spatial = s.kernel.sigma_spatial;
     report.sigma_range = s.kernel.sigma_range;
     report.neighbor_radius = s.radius;
@@ -445,12 +460,12 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
       if(it + 1 >= min_iterations || report.noise_level < D::Automatic_rules::min_noise)
       {
         report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
-        if(report.displacement >= target_displacement)
+        if(displacement_test && report.displacement >= target_displacement)
         {
           report.stop_reason = Intrinsic_stop_reason::NOISE_LEVEL_REACHED;
           break;
         }
-        if(!previous.empty() && D::mean_angle_degrees(filtered, previous) < D::Automatic_rules::change_tolerance)
+        if(!previous.empty() && D::mean_angle_degrees(filtered, previous) < change_tolerance)
         {
           report.stop_reason = Intrinsic_stop_reason::CONVERGED;
           break;
@@ -494,6 +509,16 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
       smooth.sigma_spatial = smooth.sigma_range = D::Automatic_rules::smooth_sigma;
       smooth.relative_radius = D::Automatic_rules::smooth_relative_radius;
       result = run([&smooth](const D::Flat_mesh&) { return smooth; }, false, D::Automatic_rules::smooth_min_iterations);
+    }
+    else if(result.flat_fraction >= D::Automatic_rules::flat_faced_fraction)
+    {
+      report.flat_faced = true;
+      report.discarded_iterations = report.iterations;
+      D::Setup_defaults flat = choice.kernel;
+      flat.relative_radius = D::Automatic_rules::flat_faced_relative_radius;
+      result = run([&flat](const D::Flat_mesh&) { return flat; }, false, D::Automatic_rules::min_iterations,
+                   D::Automatic_rules::flat_faced_max_iterations, false,
+                   D::Automatic_rules::flat_faced_change_tolerance);
     }
   }
   maps.write_points(tmesh, result.points);

@@ -78,6 +78,24 @@ struct Automatic_rules
   // the estimate takes for noise (CGAL's elephant, cow, dino, armadillo: 0.08
   // to 0.12 without noise) a floor of 10 iterations flattened details.
   static constexpr unsigned int smooth_min_iterations = 1;
+  // At or above flat_faced_fraction the surface is made of large flat faces
+  // (0.97 on the benchmark's cube and prism; 0.70 to 0.81 on the CAD meshes
+  // with curved parts: fandisk, anchor_dense, fandisk_large). The input is
+  // then denoised again with the first schedule's sigma on a radius of
+  // flat_faced_relative_radius d, for flat_faced_max_iterations, stopped
+  // earlier only if the normals stop changing (flat_faced_change_tolerance,
+  // tested from min_iterations; the displacement test is off). On such faces
+  // more smoothing only flattens them further: the grid's best is at r 8d
+  // and 130-150 iterations (cube 0.188, prism 0.082 degrees, against 0.563
+  // and 0.287 with the first schedule), and E_n still falls at 150. With the
+  // first schedule's tolerance (0.005) the runs stopped after 20-47
+  // iterations at 0.39 and 0.22 degrees, with 0.001 at 0.22 and 0.12. On
+  // fandisk the same settings would double the error. The price: about 14
+  // times the first schedule's time on those meshes (cube 0.10 -> 1.4 s).
+  static constexpr double flat_faced_fraction = 0.9;
+  static constexpr double flat_faced_relative_radius = 8.;
+  static constexpr unsigned int flat_faced_max_iterations = 150;
+  static constexpr double flat_faced_change_tolerance = 0.0002;
 };
 
 // The fraction of the interior edges of m (pairs of faces sharing two
