@@ -262,6 +262,12 @@ TEST(AutomaticParameters, FlatFacedScheduleOnCube)
   const double e_auto = PMP::face_normal_error(a, reference), e_first = PMP::face_normal_error(b, reference);
   EXPECT_LT(e_auto, 0.6 * e_first) << e_auto << " " << e_first;
   EXPECT_LT(max_normal_angle(a, reference), 5.);
+
+  // the memory guard: the flat-faced radius holds about 4 times the first
+  // schedule's nodes, and is skipped past 2^28 of them
+  EXPECT_TRUE(D::flat_faced_affordable(std::size_t(1) << 20));
+  EXPECT_TRUE(D::flat_faced_affordable(std::size_t(1) << 26));
+  EXPECT_FALSE(D::flat_faced_affordable((std::size_t(1) << 26) + 1));
 }
 
 // Every explicit parameter overrides the automatic choice; a given

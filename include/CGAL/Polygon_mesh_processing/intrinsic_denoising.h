@@ -74,7 +74,9 @@ struct Intrinsic_denoising_report
   bool smooth_surface = false;
   /// whether that fraction (at least 0.9: a surface of large flat faces) made
   /// the automatic mode denoise the input again with its flat-faced schedule;
-  /// the values above then describe that second run
+  /// the values above then describe that second run (`false` with a fraction
+  /// of at least 0.9: skipped, as it would hold over \f$2^{28}\f$ path nodes,
+  /// about a million faces)
   bool flat_faced = false;
   /// iterations of the first schedule whose result the second run replaced
   unsigned int discarded_iterations = 0;
@@ -253,7 +255,8 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
   denoised again with the flat-faced schedule: the first schedule's
   \f$\sigma\f$, \f$r = 8d\f$, up to 150 iterations, stopped earlier only if
   the filtered normals change by less than 0.0002 degree on average (about
-  14 times the first schedule's time). The test is made only when
+  14 times the first schedule's time; skipped if its paths would hold over
+  \f$2^{28}\f$ nodes, about a million faces). The test is made only when
   \f$\sigma_s\f$, \f$\sigma_r\f$, the radius and `number_of_iterations`
   are all left to the automatic mode and the noise level is at least 0.02.
   The values used are returned. Explicit parameters always win; a given
@@ -409,6 +412,7 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
   {
     std::vector<D::Vec3> points, normals;
     double flat_fraction = -1.;
+    std::size_t path_nodes = 0;
   };
   // `max_iterations` (if not 0) replaces the automatic mode's limit, and
   // without `displacement_test` only the convergence of the normals (under
@@ -476,6 +480,7 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
     if(stop_rule)
       report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
     Run r;
+    r.path_nodes = s.paths.face.size();
     if(measure_shape && report.noise_level >= D::Automatic_rules::min_noise)
     {
       D::compute_face_data<ConcurrencyTag>(s.mesh, points, current);
@@ -510,7 +515,8 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
       smooth.relative_radius = D::Automatic_rules::smooth_relative_radius;
       result = run([&smooth](const D::Flat_mesh&) { return smooth; }, false, D::Automatic_rules::smooth_min_iterations);
     }
-    else if(result.flat_fraction >= D::Automatic_rules::flat_faced_fraction)
+    else if(result.flat_fraction >= D::Automatic_rules::flat_faced_fraction &&
+            D::flat_faced_affordable(result.path_nodes))
     {
       report.flat_faced = true;
       report.discarded_iterations = report.iterations;

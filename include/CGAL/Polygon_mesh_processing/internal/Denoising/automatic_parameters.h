@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -96,7 +97,21 @@ struct Automatic_rules
   static constexpr double flat_faced_relative_radius = 8.;
   static constexpr unsigned int flat_faced_max_iterations = 150;
   static constexpr double flat_faced_change_tolerance = 0.0002;
+  // The flat-faced radius, twice the first schedule's, holds about four
+  // times its path nodes. Above this many (expected) nodes the flat-faced
+  // schedule is skipped and the first schedule kept: its node list alone
+  // would take over 1 GiB, and its 150 iterations minutes (about a million
+  // faces at r 8d).
+  static constexpr std::size_t flat_faced_max_path_nodes = std::size_t(1) << 28;
 };
+
+// Whether the flat-faced schedule stays within Automatic_rules'
+// flat_faced_max_path_nodes, from the path nodes of the first schedule.
+inline bool flat_faced_affordable(std::size_t first_schedule_nodes)
+{
+  const double ratio = Automatic_rules::flat_faced_relative_radius / Automatic_rules::relative_radius;
+  return double(first_schedule_nodes) * ratio * ratio <= double(Automatic_rules::flat_faced_max_path_nodes);
+}
 
 // The fraction of the interior edges of m (pairs of faces sharing two
 // vertices, both with a non-zero normal) whose faces' normals differ by less
