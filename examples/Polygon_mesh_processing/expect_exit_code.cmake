@@ -1,8 +1,10 @@
 # cmake -DEXE=program -DARGS="a|b" -DEXPECTED=code [-DEXPECT_OUTPUT=regex] [-DEXPECT_FILE=path]
-#       [-DEXPECT_STDERR=regex] [-DERROR_PREFIX=regex] -P expect_exit_code.cmake
+#       [-DEXPECT_STDERR=regex] [-DERROR_PREFIX=regex] [-DEXPECT_OUTPUT_SAME_AS=path]
+#       -P expect_exit_code.cmake
 # Runs EXE with ARGS and fails unless it exits with EXPECTED, its standard
 # error holds exactly one error line (ERROR_PREFIX, default "denoise: ...error: ")
-# when it fails, its standard output matches EXPECT_OUTPUT, its standard error
+# when it fails, its standard output matches EXPECT_OUTPUT (and is the
+# content of the file EXPECT_OUTPUT_SAME_AS), its standard error
 # EXPECT_STDERR and EXPECT_FILE exists (when given).
 if(DEFINED EXPECT_FILE)
   file(REMOVE ${EXPECT_FILE})
@@ -25,6 +27,12 @@ if(NOT EXPECTED EQUAL 0)
 endif()
 if(DEFINED EXPECT_OUTPUT AND NOT out MATCHES "${EXPECT_OUTPUT}")
   message(FATAL_ERROR "stdout does not match '${EXPECT_OUTPUT}'")
+endif()
+if(DEFINED EXPECT_OUTPUT_SAME_AS)
+  file(READ "${EXPECT_OUTPUT_SAME_AS}" expected_out)
+  if(NOT out STREQUAL expected_out)
+    message(FATAL_ERROR "stdout differs from ${EXPECT_OUTPUT_SAME_AS}")
+  endif()
 endif()
 if(DEFINED EXPECT_STDERR AND NOT err MATCHES "${EXPECT_STDERR}")
   message(FATAL_ERROR "stderr does not match '${EXPECT_STDERR}'")
