@@ -350,6 +350,48 @@ CGAL_PMP_DENOISING_AVX2_TARGET inline void exp_nonpositive_4(const double* x, do
   _mm256_storeu_pd(e, exp_nonpositive_4(_mm256_loadu_pd(x), table));
 }
 
+// The two roots of one node k with normal nk: (||nk - nf||, ||nk - ni||),
+// its step against its parent's normal nf and its range term against the
+// root's normal ni, as the AVX2 kernels take them for a node left over
+// from their pairs; x, y and z hold (nf, ni) component by component (built
+// once per shell by the shells kernel).
+inline __m128d node_roots(const Vec3& nk, __m128d x, __m128d y, __m128d z)
+{
+  const __m128d dx = _mm_sub_pd(_mm_set1_pd(nk[0]), x);
+  const __m128d dy = _mm_sub_pd(_mm_set1_pd(nk[1]), y);
+  const __m128d dz = _mm_sub_pd(_mm_set1_pd(nk[2]), z);
+  return _mm_sqrt_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz)));
+}
+
+inline __m128d node_roots(const Vec3& nk, const Vec3& nf, const Vec3& ni)
+{
+  return node_roots(nk, _mm_set_pd(ni[0], nf[0]), _mm_set_pd(ni[1], nf[1]), _mm_set_pd(ni[2], nf[2]));
+}
+
+// The weights of the `count` nodes of a face from their path sums
+// (sums[2 (k + 1)] spatial, sums[2 (k + 1) + 1] range; room for up to three
+// spare nodes, which pad the count to a multiple of 4), four at a time:
+// weight[k] = exp(-s_k^2 a - r_k^2 b), with va = a and vb = b in every lane.
+CGAL_PMP_DENOISING_AVX2_TARGET inline void weights_from_sums_avx2(double* sums, std::uint32_t count, __m256d va,
+                                                                  __m256d vb, double* weight,
+                                                                  const Exp_table& table)
+{
+  const __m256d sign = _mm256_set1_pd(-0.);
+  std::uint32_t k;
+  for(k = count; k % 4 != 0; ++k)
+    _mm_storeu_pd(sums + 2 * (k + 1), _mm_setzero_pd());
+  for(k = 0; k < count; k += 4)
+  {
+    // (s k, r k, s k+1, r k+1) and (s k+2, r k+2, s k+3, r k+3)
+    const __m256d v0 = _mm256_loadu_pd(sums + 2 * (k + 1)), v1 = _mm256_loadu_pd(sums + 2 * (k + 3));
+    // (s k, s k+2, s k+1, s k+3) and the same for r
+    const __m256d sp = _mm256_unpacklo_pd(v0, v1), rg = _mm256_unpackhi_pd(v0, v1);
+    const __m256d x = _mm256_sub_pd(_mm256_mul_pd(_mm256_xor_pd(_mm256_mul_pd(sp, sp), sign), va),
+                                    _mm256_mul_pd(_mm256_mul_pd(rg, rg), vb));
+    _mm256_storeu_pd(weight + k, _mm256_permute4x64_pd(exp_nonpositive_4(x, table), 0xD8));
+  }
+}
+
 // Faces [ib, ie) of the AVX2 kernel. The roots of two nodes (four values)
 // are taken by one instruction into `roots`, then added to the parents'
 // sums in tree order, so the roots do not wait for the sums; the weights are
@@ -364,7 +406,6 @@ CGAL_PMP_DENOISING_AVX2_TARGET inline void intrinsic_filter_faces_l1_avx2(
 {
   const Exp_table& table = Exp_table::instance();
   const __m256d va = _mm256_set1_pd(a), vb = _mm256_set1_pd(b);
-  const __m256d sign = _mm256_set1_pd(-0.);
   const Vec3* nrm = normals.data();
   for(std::size_t i = ib; i < ie; ++i)
   {
@@ -397,32 +438,14 @@ CGAL_PMP_DENOISING_AVX2_TARGET inline void intrinsic_filter_faces_l1_avx2(
     if(k < count)
     {
       const std::int32_t p = parent[k];
-      const Vec3& nk = nrm[face[k]];
-      const Vec3& nf = nrm[p < 0 ? std::uint32_t(i) : face[p]];
-      const __m128d dx = _mm_sub_pd(_mm_set1_pd(nk[0]), _mm_set_pd(ni[0], nf[0]));
-      const __m128d dy = _mm_sub_pd(_mm_set1_pd(nk[1]), _mm_set_pd(ni[1], nf[1]));
-      const __m128d dz = _mm_sub_pd(_mm_set1_pd(nk[2]), _mm_set_pd(ni[2], nf[2]));
-      const __m128d sq = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
-      _mm_storeu_pd(roots + 2 * k, _mm_sqrt_pd(sq));
+      _mm_storeu_pd(roots + 2 * k, node_roots(nrm[face[k]], nrm[p < 0 ? std::uint32_t(i) : face[p]], ni));
     }
     // sums[2 (k + 1)] = spatial sum of node k, sums[2 (k + 1) + 1] its range
     // sum; slot 0 is the root's (0, 0)
     for(k = 0; k < count; ++k)
       _mm_storeu_pd(sums + 2 * (k + 1),
                     _mm_add_pd(_mm_loadu_pd(sums + 2 * (parent[k] + 1)), _mm_loadu_pd(roots + 2 * k)));
-    // up to three spare nodes pad the count to a multiple of 4
-    for(k = count; k % 4 != 0; ++k)
-      _mm_storeu_pd(sums + 2 * (k + 1), _mm_setzero_pd());
-    for(k = 0; k < count; k += 4)
-    {
-      // (s k, r k, s k+1, r k+1) and (s k+2, r k+2, s k+3, r k+3)
-      const __m256d v0 = _mm256_loadu_pd(sums + 2 * (k + 1)), v1 = _mm256_loadu_pd(sums + 2 * (k + 3));
-      // (s k, s k+2, s k+1, s k+3) and the same for r
-      const __m256d sp = _mm256_unpacklo_pd(v0, v1), rg = _mm256_unpackhi_pd(v0, v1);
-      const __m256d x = _mm256_sub_pd(_mm256_mul_pd(_mm256_xor_pd(_mm256_mul_pd(sp, sp), sign), va),
-                                      _mm256_mul_pd(_mm256_mul_pd(rg, rg), vb));
-      _mm256_storeu_pd(weight + k, _mm256_permute4x64_pd(exp_nonpositive_4(x, table), 0xD8));
-    }
+    weights_from_sums_avx2(sums, count, va, vb, weight, table);
     out[i] = weighted_normal_average(forest, i, nb, ne, weight, normals, areas, include_self);
   }
 }
@@ -440,7 +463,6 @@ CGAL_PMP_DENOISING_AVX2_TARGET inline void intrinsic_filter_faces_l1_avx2_shells
 {
   const Exp_table& table = Exp_table::instance();
   const __m256d va = _mm256_set1_pd(a), vb = _mm256_set1_pd(b);
-  const __m256d sign = _mm256_set1_pd(-0.);
   const Vec3* nrm = normals.data();
   for(std::size_t i = ib; i < ie; ++i)
   {
@@ -478,14 +500,9 @@ CGAL_PMP_DENOISING_AVX2_TARGET inline void intrinsic_filter_faces_l1_avx2_shells
           _mm256_storeu_pd(sums + 2 * (k + 1), _mm256_add_pd(ps2, _mm256_sqrt_pd(sq)));
         }
         if(k < end)
-        {
-          const Vec3& nk = nrm[face[k]];
-          const __m128d dx = _mm_sub_pd(_mm_set1_pd(nk[0]), _mm256_castpd256_pd128(px));
-          const __m128d dy = _mm_sub_pd(_mm_set1_pd(nk[1]), _mm256_castpd256_pd128(py));
-          const __m128d dz = _mm_sub_pd(_mm_set1_pd(nk[2]), _mm256_castpd256_pd128(pz));
-          const __m128d sq = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
-          _mm_storeu_pd(sums + 2 * (k + 1), _mm_add_pd(ps, _mm_sqrt_pd(sq)));
-        }
+          _mm_storeu_pd(sums + 2 * (k + 1),
+                        _mm_add_pd(ps, node_roots(nrm[face[k]], _mm256_castpd256_pd128(px),
+                                                  _mm256_castpd256_pd128(py), _mm256_castpd256_pd128(pz))));
         lo = hi;
       }
       start += size;
@@ -496,26 +513,11 @@ CGAL_PMP_DENOISING_AVX2_TARGET inline void intrinsic_filter_faces_l1_avx2_shells
       for(std::uint32_t k = 0; k < count; ++k)
       {
         const std::int32_t p = parent[k];
-        const Vec3& nk = nrm[face[k]];
-        const Vec3& nf = nrm[p < 0 ? std::uint32_t(i) : face[p]];
-        const __m128d dx = _mm_sub_pd(_mm_set1_pd(nk[0]), _mm_set_pd(ni[0], nf[0]));
-        const __m128d dy = _mm_sub_pd(_mm_set1_pd(nk[1]), _mm_set_pd(ni[1], nf[1]));
-        const __m128d dz = _mm_sub_pd(_mm_set1_pd(nk[2]), _mm_set_pd(ni[2], nf[2]));
-        const __m128d sq = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
-        _mm_storeu_pd(sums + 2 * (k + 1), _mm_add_pd(_mm_loadu_pd(sums + 2 * (p + 1)), _mm_sqrt_pd(sq)));
+        const __m128d r = node_roots(nrm[face[k]], nrm[p < 0 ? std::uint32_t(i) : face[p]], ni);
+        _mm_storeu_pd(sums + 2 * (k + 1), _mm_add_pd(_mm_loadu_pd(sums + 2 * (p + 1)), r));
       }
     }
-    std::uint32_t k;
-    for(k = count; k % 4 != 0; ++k)
-      _mm_storeu_pd(sums + 2 * (k + 1), _mm_setzero_pd());
-    for(k = 0; k < count; k += 4)
-    {
-      const __m256d v0 = _mm256_loadu_pd(sums + 2 * (k + 1)), v1 = _mm256_loadu_pd(sums + 2 * (k + 3));
-      const __m256d sp = _mm256_unpacklo_pd(v0, v1), rg = _mm256_unpackhi_pd(v0, v1);
-      const __m256d x = _mm256_sub_pd(_mm256_mul_pd(_mm256_xor_pd(_mm256_mul_pd(sp, sp), sign), va),
-                                      _mm256_mul_pd(_mm256_mul_pd(rg, rg), vb));
-      _mm256_storeu_pd(weight + k, _mm256_permute4x64_pd(exp_nonpositive_4(x, table), 0xD8));
-    }
+    weights_from_sums_avx2(sums, count, va, vb, weight, table);
     out[i] = weighted_normal_average(forest, i, nb, ne, weight, normals, areas, include_self);
   }
 }
@@ -529,7 +531,8 @@ void intrinsic_filter_pass_l1_avx2(const Path_forest& forest, const std::vector<
   const double a = 1. / (2. * kernel.sigma_spatial * kernel.sigma_spatial),
                b = 1. / (2. * kernel.sigma_range * kernel.sigma_range);
   for_each_chunk<ConcurrencyTag>(forest.number_of_faces(), [&](std::size_t ib, std::size_t ie) {
-    std::vector<double> sums(2 * (max_nodes + 4), 0.), roots(2 * (max_nodes + 2)), weight(max_nodes + 4);
+    std::vector<double> sums(2 * (max_nodes + 4), 0.), weight(max_nodes + 4);
+    std::vector<double> roots(forest.square_regions.empty() ? 2 * (max_nodes + 2) : 0); // the shells need none
     std::vector<std::int32_t> parent_scratch(max_nodes + Square_pattern_parent_table::width);
     if(forest.square_regions.empty())
       intrinsic_filter_faces_l1_avx2(forest, normals, areas, a, b, kernel.include_self, ib, ie, sums.data(),
