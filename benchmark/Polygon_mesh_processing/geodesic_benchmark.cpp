@@ -13,6 +13,18 @@
 // geodesic_paths() on neighbourhoods built beforehand); "total" times the
 // public intrinsic_denoising() call, which builds face data, neighbourhoods
 // and paths and runs the 30 iterations.
+//
+// A second table splits the geodesic path construction on one thread into
+// its phases (more runs with Geodesic_path_options::time_phases; the minimum
+// of each phase over the repetitions): the
+// patch copies, and the three calls into CGAL's Surface_mesh_shortest_path
+// (sequence-tree construction, its deletion, the queries). "CGAL floor"
+// is a lower bound of the geodesic total / square-pattern total ratio for any
+// implementation that makes these CGAL calls: (CGAL's seconds + the
+// square pattern's total minus its path seconds) / the square pattern's
+// total, i.e. as if everything else in the geodesic run (patch copies, path
+// conversion, and filtering the geodesic forest's 22% more nodes) took no
+// more time than in the square-pattern run.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -54,6 +66,8 @@ struct Row
   double En = 0., Ev = 0.;
   std::size_t nodes = 0;
   std::size_t paths_built = 0, fallbacks = 0; // geodesic only: neighbour paths, of which direct
+  D::Geodesic_path_statistics phases;          // geodesic only: a run with time_phases
+  double phased_paths = 0.;                    // the seconds of that run
 };
 
 template <typename Tag>
@@ -89,6 +103,24 @@ static Row run(const Mesh& reference, const Mesh& noisy, PMP::Intrinsic_path_str
     row.En = PMP::face_normal_error(denoised, reference);
     row.Ev = PMP::vertex_position_error(denoised, reference);
   }
+  if(strategy == PMP::Intrinsic_path_strategy::GEODESIC)
+  {
+    // each phase's minimum over the repetitions
+    D::Geodesic_path_options options;
+    options.time_phases = true;
+    for(int r = 0; r < repetitions; ++r)
+    {
+      D::Geodesic_path_statistics s;
+      const double t = seconds([&] { D::geodesic_paths<Tag>(flat, fd, nb, options, &s); });
+      D::Geodesic_path_statistics& m = row.phases;
+      const bool first = r == 0;
+      row.phased_paths = first ? t : (std::min)(row.phased_paths, t);
+      m.patch_seconds = first ? s.patch_seconds : (std::min)(m.patch_seconds, s.patch_seconds);
+      m.tree_seconds = first ? s.tree_seconds : (std::min)(m.tree_seconds, s.tree_seconds);
+      m.clear_seconds = first ? s.clear_seconds : (std::min)(m.clear_seconds, s.clear_seconds);
+      m.query_seconds = first ? s.query_seconds : (std::min)(m.query_seconds, s.query_seconds);
+    }
+  }
   return row;
 }
 
@@ -102,6 +134,12 @@ int main(int argc, char** argv)
     double sigma_E;
   };
   std::vector<Model> models;
+  struct Phases
+  {
+    std::string name;
+    Row square, geodesic;
+  };
+  std::vector<Phases> phases;
   {
     Mesh fandisk;
     if(!CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk) || fandisk.is_empty())
@@ -142,6 +180,7 @@ int main(int argc, char** argv)
       const Row geodesic =
           run<CGAL::Sequential_tag>(m.reference, noisy, PMP::Intrinsic_path_strategy::GEODESIC, repetitions);
       print("1", square, geodesic);
+      phases.push_back({m.name, square, geodesic});
     }
 #ifdef CGAL_LINKED_WITH_TBB
     {
@@ -152,6 +191,19 @@ int main(int argc, char** argv)
       print("TBB", square, geodesic);
     }
 #endif
+  }
+  std::printf("\nWhere the geodesic path time goes, 1 thread (runs with time_phases, minimum of each phase; seconds):\n\n"
+              "| model | paths | patch copies | CGAL tree construction | CGAL tree deletion | CGAL queries | other "
+              "| CGAL total | square total | square paths | CGAL floor of the ratio |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for(const Phases& p : phases)
+  {
+    const D::Geodesic_path_statistics& s = p.geodesic.phases;
+    const double cgal = s.tree_seconds + s.clear_seconds + s.query_seconds;
+    const double other = p.geodesic.phased_paths - cgal - s.patch_seconds;
+    std::printf("| %s | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.2f |\n", p.name.c_str(),
+                p.geodesic.phased_paths, s.patch_seconds, s.tree_seconds, s.clear_seconds, s.query_seconds, other, cgal,
+                p.square.total, p.square.paths, (cgal + p.square.total - p.square.paths) / p.square.total);
   }
   return 0;
 }

@@ -377,6 +377,31 @@ TEST(GeodesicPaths, ForestIsAPrefixTreeOfTheGeodesicPaths)
   EXPECT_GT(longer_than_direct, stats.paths / 2);
 }
 
+TEST(GeodesicPaths, PhaseTimingLeavesTheForestAsItIs)
+{
+  Mesh mesh = denoising_test::graded_octahedron<Mesh>(8);
+  PMP::add_gaussian_noise(mesh, 0.3, CGAL::parameters::random_seed(5));
+  Flat f(mesh);
+  const D::Csr nb = f.neighbors(4.);
+  D::Geodesic_path_statistics plain, timed;
+  const D::Path_forest a = D::geodesic_paths<CGAL::Sequential_tag>(f.mesh, f.faces, nb, {}, &plain);
+  D::Geodesic_path_options o;
+  o.time_phases = true;
+  const D::Path_forest b = D::geodesic_paths<CGAL::Sequential_tag>(f.mesh, f.faces, nb, o, &timed);
+  EXPECT_EQ(a.offsets, b.offsets);
+  EXPECT_EQ(a.face, b.face);
+  EXPECT_EQ(a.parent, b.parent);
+  EXPECT_EQ(a.weighted, b.weighted);
+  EXPECT_EQ(plain.paths, timed.paths);
+  EXPECT_EQ(plain.fallbacks, timed.fallbacks);
+  // off: nothing timed; on: every phase ran (hundreds of patches and queries)
+  EXPECT_EQ(plain.patch_seconds + plain.tree_seconds + plain.clear_seconds + plain.query_seconds, 0.);
+  EXPECT_GT(timed.patch_seconds, 0.);
+  EXPECT_GT(timed.tree_seconds, 0.);
+  EXPECT_GT(timed.clear_seconds, 0.);
+  EXPECT_GT(timed.query_seconds, 0.);
+}
+
 TEST(GeodesicPaths, StepLengthsSumToTheGeodesicLength)
 {
   Planar_grid g(8, 0.25);

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <exception>
@@ -53,6 +54,10 @@ struct Geodesic_path_options
   // `length_unit`; otherwise leave it empty (unit steps, eq. 8).
   bool step_length = false;
   double length_unit = 1.;
+  // Time the phases of the path construction into Geodesic_path_statistics
+  // (the *_seconds fields; for the benchmark). Off by default: two clock
+  // reads per neighbour cost about 3% of the path time.
+  bool time_phases = false;
 };
 
 // Counts of what happened while building the paths (for tests and reports).
@@ -62,6 +67,13 @@ struct Geodesic_path_statistics
   std::size_t fallbacks = 0;        // of which direct i -> j (no geodesic found in the patch)
   std::size_t vertex_passages = 0;  // geodesics through a vertex of the patch (pseudo-sources)
   std::size_t failed_patches = 0;   // faces whose patch could not be built (all paths direct)
+  // With Geodesic_path_options::time_phases, seconds (summed over threads)
+  // spent copying the patches, and inside CGAL's Surface_mesh_shortest_path:
+  // building the sequence trees (build_sequence_tree()), freeing them
+  // (clear()) and answering the queries
+  // (shortest_path_sequence_to_source_points(), with the visitor that records
+  // the crossed edges). Zero otherwise.
+  double patch_seconds = 0., tree_seconds = 0., clear_seconds = 0., query_seconds = 0.;
 
   void add(const Geodesic_path_statistics& o)
   {
@@ -69,6 +81,10 @@ struct Geodesic_path_statistics
     fallbacks += o.fallbacks;
     vertex_passages += o.vertex_passages;
     failed_patches += o.failed_patches;
+    patch_seconds += o.patch_seconds;
+    tree_seconds += o.tree_seconds;
+    clear_seconds += o.clear_seconds;
+    query_seconds += o.query_seconds;
   }
 };
 
@@ -239,6 +255,31 @@ inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const V
 // inside the patch are kept apart in the copy (the vertex is duplicated per
 // fan of faces connected through edges), so the copy is always a manifold:
 // a geodesic cannot go from one fan to another through such a vertex.
+// A stopwatch for Geodesic_path_options::time_phases: add_to() adds the
+// seconds since the last add_to() (or construction) to *target and restarts;
+// when not running, it reads no clock.
+class Phase_clock
+{
+public:
+  explicit Phase_clock(bool running) : running_(running)
+  {
+    if(running_)
+      last_ = std::chrono::steady_clock::now();
+  }
+  void add_to(double* target)
+  {
+    if(!running_ || target == nullptr)
+      return;
+    const auto now = std::chrono::steady_clock::now();
+    *target += std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+  }
+
+private:
+  bool running_;
+  std::chrono::steady_clock::time_point last_;
+};
+
 class Geodesic_patch_solver
 {
   // Plain double arithmetic, without filtered predicates: CGAL's algorithm
@@ -333,7 +374,9 @@ public:
   {
     source_ = i;
     ready_ = false;
+    Phase_clock clock(phases_ != nullptr);
     shortest_path_.clear(); // frees the sequence tree of the previous face
+    clock.add_to(phases_ ? &phases_->clear_seconds : nullptr);
     patch_.resize(0, 0, 0);
     global_.clear();
     ++stamp_;
@@ -390,7 +433,9 @@ public:
           }
       ring_begin = ring_end;
     }
-    if(!build_patch())
+    const bool built = build_patch();
+    clock.add_to(phases_ ? &phases_->patch_seconds : nullptr);
+    if(!built)
     {
       patch_.resize(0, 0, 0);
       global_.clear();
@@ -406,6 +451,7 @@ public:
       shortest_path_.clear();
       return false;
     }
+    clock.add_to(phases_ ? &phases_->tree_seconds : nullptr);
     ready_ = true;
     return true;
   }
@@ -413,6 +459,11 @@ public:
   // Whether path_to() fills Geodesic_path::points (default true; the forest
   // does not need them).
   void set_collect_points(bool b) { points_ = b; }
+
+  // Where set_source() and path_to() add the seconds of their phases (the
+  // *_seconds fields of Geodesic_path_statistics); nullptr (default): not
+  // timed.
+  void set_phase_statistics(Geodesic_path_statistics* s) { phases_ = s; }
 
   // The geodesic from c_i to c_j inside the patch. Returns false if j is not
   // in the patch or not reachable from c_i inside it, or if CGAL's answer is
@@ -429,6 +480,7 @@ public:
     events_.clear();
     Visitor visitor{this, &events_};
     double distance = -1.;
+    Phase_clock clock(phases_ != nullptr);
     try
     {
       distance = CGAL::to_double(shortest_path_
@@ -440,6 +492,7 @@ public:
     {
       return false;
     }
+    clock.add_to(phases_ ? &phases_->query_seconds : nullptr);
     if(!(distance >= 0.) || !std::isfinite(distance) || events_.size() < 2 || events_.front().kind != Event::FACE ||
        events_.back().kind != Event::FACE || events_.back().far_face != source_)
       return false;
@@ -788,6 +841,7 @@ private:
   Shortest_path shortest_path_{patch_};
   bool ready_ = false;
   bool points_ = true;
+  Geodesic_path_statistics* phases_ = nullptr;
 };
 
 // Step lengths along a geodesic path (eq. 4). Each face x of the path is
@@ -858,6 +912,8 @@ Path_forest geodesic_paths(const Flat_mesh& m, const Face_data& fd, const Csr& n
           solver_ptr->set_collect_points(false);
         }
         Geodesic_patch_solver& solver = *solver_ptr;
+        // the phase seconds of this call go to its first chunk's statistics
+        solver.set_phase_statistics(options.time_phases ? &chunks[cb].statistics : nullptr);
         std::vector<Geodesic_path> paths;
         std::vector<char> reached;
         std::vector<std::pair<double, std::size_t>> order;
