@@ -1,7 +1,7 @@
 // Automatic parameters and stopping rule of intrinsic_denoising() (issue 7),
 // measured against a grid search on a set of seeded noisy inputs.
 //
-// Usage: auto_parameters_benchmark [--grid] [--estimates] [--trace] [--only name]
+// Usage: auto_parameters_benchmark [--grid] [--wide-grid] [--estimates] [--trace] [--only name]
 //                                  [--mesh file.off sigma kind]...
 //   default:     per input, E_n of the automatic mode (the denoiser's defaults:
 //                intrinsic_denoising(mesh)) with what it chose, and E_n of each
@@ -9,6 +9,9 @@
 //   --grid:      also the best E_n of a grid search over (sigma, r, k) for the
 //                same method and its setting, and the ratio (slow: 35 settings
 //                of up to 150 iterations per input);
+//   --wide-grid: only, per input, the best E_n of a second grid beyond the
+//                first (sigma 1.4 to 10, r 1.2 to 2 d, v 1 or 2, k up to 60)
+//                next to the best classic default (use with --only);
 //   --estimates: only the noise estimates (noisy and noise-free) per input;
 //   --trace:     per grid setting, E_n and the stopping signals per iteration
 //                (to stderr), for studying the rule;
@@ -156,19 +159,33 @@ static double normal_error(const D::Flat_mesh& m, const std::vector<D::Vec3>& po
 struct Grid_best
 {
   double En = 1e30, sigma = 0., radius = 0.;
-  unsigned int k = 0;
+  unsigned int k = 0, v = 2;
 };
 
-// The grid: sigma_s = sigma_r in `sigmas`, r in `radii` (in d), k = 1..kmax,
-// v = 2. Returns the best setting.
-static Grid_best grid_search(const Input& in, bool trace)
+struct Grid
 {
-  const std::vector<double> sigmas = {0.2, 0.3, 0.4, 0.5, 0.7, 1.0, 1.4};
-  const std::vector<double> radii = {2., 3., 4., 6., 8.};
-  const unsigned int kmax = 150;
+  std::vector<double> sigmas, radii;
+  std::vector<unsigned int> vertex_iterations;
+  unsigned int kmax;
+};
+
+// The grid of --grid: sigma_s = sigma_r in {0.2, ..., 1.4}, r in {2, ..., 8} d,
+// k = 1..150, v = 2.
+static Grid standard_grid() { return {{0.2, 0.3, 0.4, 0.5, 0.7, 1.0, 1.4}, {2., 3., 4., 6., 8.}, {2}, 150}; }
+
+// The grid of --wide-grid: where the standard grid stops (its best settings on
+// the curved inputs are at its largest sigma and smallest radius), wider
+// kernels on smaller radii, and one or two vertex iterations; k = 1..60.
+static Grid wide_grid() { return {{1.4, 2., 3., 5., 10.}, {1.2, 1.5, 2.}, {1, 2}, 60}; }
+
+// The grid search: sigma_s = sigma_r in `sigmas`, r in `radii` (in d),
+// v in `vertex_iterations`, k = 1..kmax. Returns the best setting.
+static Grid_best grid_search(const Input& in, bool trace, const Grid& grid = standard_grid())
+{
+  const unsigned int kmax = grid.kmax;
   const D::Flat_mesh ref = flat(in.reference);
   Grid_best best;
-  for(double r : radii)
+  for(double r : grid.radii)
   {
     const D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters> maps(in.noisy, CGAL::parameters::default_values());
     const auto np = CGAL::parameters::relative_neighbor_radius(r);
@@ -177,7 +194,8 @@ static Grid_best grid_search(const Input& in, bool trace)
     // the setup may renumber faces (not vertices): reference normals in its order
     D::Face_data ref_fd;
     D::compute_face_data<CGAL::Sequential_tag>(base.mesh, ref.points, ref_fd);
-    for(double sigma : sigmas)
+    for(unsigned int v : grid.vertex_iterations)
+    for(double sigma : grid.sigmas)
     {
       D::Intrinsic_kernel kernel = base.kernel;
       kernel.sigma_spatial = kernel.sigma_range = sigma;
@@ -194,10 +212,10 @@ static Grid_best grid_search(const Input& in, bool trace)
         if(k > 1)
           D::compute_face_data<Tag>(base.mesh, points, current);
         D::intrinsic_filter_pass<Tag>(base.paths, current.normals, current.areas, kernel, filtered);
-        D::update_vertices<Tag>(base.mesh, points, filtered, fixed, 2, centroids, next, &guard);
+        D::update_vertices<Tag>(base.mesh, points, filtered, fixed, v, centroids, next, &guard);
         const double En = normal_error(base.mesh, points, ref_fd.normals);
         if(En < best.En)
-          best = {En, sigma, r, k};
+          best = {En, sigma, r, k, v};
         if(trace)
         {
           double disp = 0., change = 0.;
@@ -220,15 +238,29 @@ static Grid_best grid_search(const Input& in, bool trace)
   return best;
 }
 
+// The classic methods with their defaults, in the order of the table's
+// columns: FDC03, JDD03, SRML07, ZFAT11, HS13, ZDZ15.
+static std::vector<std::function<void(Mesh&)>> classic_methods()
+{
+  return {[](Mesh& m) { PMP::bilateral_mesh_denoising(m); },
+          [](Mesh& m) { PMP::non_iterative_denoising(m); },
+          [](Mesh& m) { PMP::fast_feature_preserving_denoising(m); },
+          [](Mesh& m) { PMP::bilateral_normal_denoising(m); },
+          [](Mesh& m) { PMP::l0_denoising(m); },
+          [](Mesh& m) { PMP::guided_normal_denoising(m); }};
+}
+
 int main(int argc, char** argv)
 {
-  bool estimates_only = false, trace = false, grid = false;
+  bool estimates_only = false, trace = false, grid = false, wide = false;
   std::string only;
   std::vector<Extra> extras;
   for(int i = 1; i < argc; ++i)
   {
     if(std::strcmp(argv[i], "--grid") == 0)
       grid = true;
+    else if(std::strcmp(argv[i], "--wide-grid") == 0)
+      wide = true;
     else if(std::strcmp(argv[i], "--estimates") == 0)
       estimates_only = true;
     else if(std::strcmp(argv[i], "--trace") == 0)
@@ -242,11 +274,38 @@ int main(int argc, char** argv)
     }
     else
     {
-      std::cerr << "usage: auto_parameters_benchmark [--grid] [--estimates] [--trace] [--only name] [--mesh file.off sigma kind]...\n";
+      std::cerr << "usage: auto_parameters_benchmark [--grid] [--wide-grid] [--estimates] [--trace] [--only name] [--mesh file.off sigma kind]...\n";
       return 2;
     }
   }
   const std::vector<Input> inputs = make_inputs(only, extras);
+  if(wide)
+  {
+    std::printf("| input | noise | wide grid best E_n | at (sigma, r/d, k, v) | best classic default E_n (method) |\n|---|---|---|---|---|\n");
+    const char* names[] = {"FDC03", "JDD03", "SRML07", "ZFAT11", "HS13", "ZDZ15"};
+    for(const Input& in : inputs)
+    {
+      const Grid_best g = grid_search(in, trace, wide_grid());
+      std::size_t best = 0;
+      double best_En = 1e30;
+      const std::vector<std::function<void(Mesh&)>> classic = classic_methods();
+      for(std::size_t c = 0; c < classic.size(); ++c)
+      {
+        Mesh m = in.noisy;
+        classic[c](m);
+        const double En = PMP::face_normal_error(m, in.reference);
+        if(En < best_En)
+        {
+          best_En = En;
+          best = c;
+        }
+      }
+      std::printf("| %s | %s | %.3f | (%.1f, %.1f, %u, %u) | %.3f (%s) |\n", in.name.c_str(), in.noise.c_str(), g.En,
+                  g.sigma, g.radius, g.k, g.v, best_En, names[best]);
+      std::fflush(stdout);
+    }
+    return 0;
+  }
   if(estimates_only)
   {
     std::printf("| input | kind | noise | faces | estimate q25 | q50 | noise-free q25 | q50 | estimate | median adjacent L1 normal difference |\n|---|---|---|---|---|---|---|---|---|---|\n");
@@ -321,10 +380,7 @@ int main(int argc, char** argv)
       const Grid_best g = grid_search(in, trace);
       std::printf(" %.3f | (%.2f, %.0f, %u) | %.3f |", g.En, g.sigma, g.radius, g.k, auto_En / g.En);
     }
-    const std::vector<std::function<void(Mesh&)>> classic = {
-        [](Mesh& m) { PMP::bilateral_mesh_denoising(m); },     [](Mesh& m) { PMP::non_iterative_denoising(m); },
-        [](Mesh& m) { PMP::fast_feature_preserving_denoising(m); }, [](Mesh& m) { PMP::bilateral_normal_denoising(m); },
-        [](Mesh& m) { PMP::l0_denoising(m); },                 [](Mesh& m) { PMP::guided_normal_denoising(m); }};
+    const std::vector<std::function<void(Mesh&)>> classic = classic_methods();
     double best_classic = 1e30;
     for(const auto& method : classic)
     {
