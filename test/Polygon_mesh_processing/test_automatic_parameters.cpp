@@ -263,11 +263,41 @@ TEST(AutomaticParameters, FlatFacedScheduleOnCube)
   EXPECT_LT(e_auto, 0.6 * e_first) << e_auto << " " << e_first;
   EXPECT_LT(max_normal_angle(a, reference), 5.);
 
-  // the memory guard: the flat-faced radius holds about 4 times the first
-  // schedule's nodes, and is skipped past 2^28 of them
-  EXPECT_TRUE(D::flat_faced_affordable(std::size_t(1) << 20));
-  EXPECT_TRUE(D::flat_faced_affordable(std::size_t(1) << 26));
-  EXPECT_FALSE(D::flat_faced_affordable((std::size_t(1) << 26) + 1));
+  // the memory guard: the flat-faced radius holds (8 / r)^2 times the first
+  // schedule's nodes (r its relative radius), and is skipped past 2^28 of them
+  EXPECT_TRUE(D::flat_faced_affordable(std::size_t(1) << 20, 4.));
+  EXPECT_TRUE(D::flat_faced_affordable(std::size_t(1) << 26, 4.));
+  EXPECT_FALSE(D::flat_faced_affordable((std::size_t(1) << 26) + 1, 4.));
+  EXPECT_TRUE(D::flat_faced_affordable(9 * (std::size_t(1) << 22), 3.));      // 64/9 times: 2^28
+  EXPECT_FALSE(D::flat_faced_affordable(9 * (std::size_t(1) << 22) + 9, 3.)); // just over
+  EXPECT_FALSE(D::flat_faced_affordable(1, 0.));
+}
+
+// The automatic radius follows the noise level: (2 + 10 noise) d, clamped to
+// [3d, 4d]. At sigma_E 0.1 the smaller radius keeps fandisk's curved parts:
+// E_n 1.270 degrees (seed 1) against 1.368 with r = 4d and the same sigma
+// and stopping rule.
+TEST(AutomaticParameters, RadiusFollowsTheNoiseLevel)
+{
+  EXPECT_EQ(D::automatic_choice(0.).kernel.relative_radius, 3.);
+  EXPECT_EQ(D::automatic_choice(0.1).kernel.relative_radius, 3.);
+  EXPECT_NEAR(D::automatic_choice(0.15).kernel.relative_radius, 3.5, 1e-12);
+  EXPECT_EQ(D::automatic_choice(0.2).kernel.relative_radius, 4.);
+  EXPECT_EQ(D::automatic_choice(0.5).kernel.relative_radius, 4.);
+
+  Mesh m = fandisk();
+  PMP::add_gaussian_noise(m, 0.1, CGAL::parameters::random_seed(1));
+  Mesh wide = m;
+  const auto r = PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(m);
+  EXPECT_FALSE(r.smooth_surface);
+  EXPECT_FALSE(r.flat_faced);
+  EXPECT_NEAR(r.relative_neighbor_radius, 2. + 10. * r.noise_level, 1e-9);
+  EXPECT_LT(r.relative_neighbor_radius, 3.2);
+  const double s = r.sigma_spatial;
+  PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(
+      wide, CGAL::parameters::sigma_spatial(s).sigma_range(s).relative_neighbor_radius(4.));
+  const double e_auto = PMP::face_normal_error(m, fandisk()), e_wide = PMP::face_normal_error(wide, fandisk());
+  EXPECT_LT(e_auto, 0.95 * e_wide) << e_auto << " " << e_wide;
 }
 
 // Every explicit parameter overrides the automatic choice; a given

@@ -239,7 +239,8 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
   smooth curvature and the low quantile ignores the vertices near sharp
   edges). Every parameter not given is then derived from it:
   \f$\sigma_s = \sigma_r = 0.2 + \hat\sigma\f$ (clamped to [0.2, 1.4]),
-  \f$r = 4d\f$, \f$v_{iter} = 2\f$, at most 100 iterations; and a
+  \f$r = (2 + 10\hat\sigma)\,d\f$ (clamped to \f$[3d, 4d]\f$),
+  \f$v_{iter} = 2\f$, at most 100 iterations; and a
   stopping rule that needs no ground truth ends the iterations once the RMS
   vertex displacement from the input reaches 0.95 times the noise level, or
   once the filtered normals change by less than 0.005 degree on average from
@@ -516,7 +517,7 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
       result = run([&smooth](const D::Flat_mesh&) { return smooth; }, false, D::Automatic_rules::smooth_min_iterations);
     }
     else if(result.flat_fraction >= D::Automatic_rules::flat_faced_fraction &&
-            D::flat_faced_affordable(result.path_nodes))
+            D::flat_faced_affordable(result.path_nodes, choice.kernel.relative_radius))
     {
       report.flat_faced = true;
       report.discarded_iterations = report.iterations;
