@@ -108,10 +108,10 @@ struct Automatic_rules
   static constexpr unsigned int flat_faced_max_iterations = 150;
   static constexpr double flat_faced_change_tolerance = 0.0002;
   // The flat-faced radius, two to 2.7 times the first schedule's, holds
-  // about four to seven times its path nodes. Above this many (expected) nodes the flat-faced
-  // schedule is skipped and the first schedule kept: its node list alone
-  // would take over 1 GiB, and its 150 iterations minutes (about a million
-  // faces at r 8d).
+  // about four to seven times its path nodes. Above this many (expected)
+  // nodes the flat-faced schedule is skipped and the first schedule kept: its
+  // node list alone would take over 1 GiB, and its 150 iterations minutes
+  // (about a million faces at r 8d).
   static constexpr std::size_t flat_faced_max_path_nodes = std::size_t(1) << 28;
 };
 

@@ -242,19 +242,6 @@ inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const V
   return squared_norm(ap - v * ab - w * ac);
 }
 
-// Geodesics from the centroid of one face to the centroids of its neighbours,
-// inside a patch of the mesh. Holds the scratch memory of one thread: make one
-// per thread and call set_source() then path_to() for each face.
-//
-// The patch is a CGAL::Surface_mesh copy of face i, its neighbours and
-// `patch_rings` rings of faces around them (only the faces that come within
-// R_i of c_i, R_i the distance to the farthest neighbour centroid), plus the
-// faces around each vertex where selected faces meet only at that vertex (the
-// neighbourhood grows through shared vertices), without the faces of zero area
-// (zero normal in Face_data). Faces of the mesh that only share a vertex
-// inside the patch are kept apart in the copy (the vertex is duplicated per
-// fan of faces connected through edges), so the copy is always a manifold:
-// a geodesic cannot go from one fan to another through such a vertex.
 // A stopwatch for Geodesic_path_options::time_phases: add_to() adds the
 // seconds since the last add_to() (or construction) to *target and restarts;
 // when not running, it reads no clock.
@@ -280,6 +267,19 @@ private:
   std::chrono::steady_clock::time_point last_;
 };
 
+// Geodesics from the centroid of one face to the centroids of its neighbours,
+// inside a patch of the mesh. Holds the scratch memory of one thread: make one
+// per thread and call set_source() then path_to() for each face.
+//
+// The patch is a CGAL::Surface_mesh copy of face i, its neighbours and
+// `patch_rings` rings of faces around them (only the faces that come within
+// R_i of c_i, R_i the distance to the farthest neighbour centroid), plus the
+// faces around each vertex where selected faces meet only at that vertex (the
+// neighbourhood grows through shared vertices), without the faces of zero area
+// (zero normal in Face_data). Faces of the mesh that only share a vertex
+// inside the patch are kept apart in the copy (the vertex is duplicated per
+// fan of faces connected through edges), so the copy is always a manifold:
+// a geodesic cannot go from one fan to another through such a vertex.
 class Geodesic_patch_solver
 {
   // Plain double arithmetic, without filtered predicates: CGAL's algorithm
