@@ -238,16 +238,26 @@ static Grid_best grid_search(const Input& in, bool trace, const Grid& grid = sta
   return best;
 }
 
-// The classic methods with their defaults, in the order of the table's
-// columns: FDC03, JDD03, SRML07, ZFAT11, HS13, ZDZ15.
-static std::vector<std::function<void(Mesh&)>> classic_methods()
+// E_n of the classic methods with their defaults on `in`, in the order of
+// the table's columns (classic_names).
+static const char* const classic_names[] = {"FDC03", "JDD03", "SRML07", "ZFAT11", "HS13", "ZDZ15"};
+static std::vector<double> classic_errors(const Input& in)
 {
-  return {[](Mesh& m) { PMP::bilateral_mesh_denoising(m); },
-          [](Mesh& m) { PMP::non_iterative_denoising(m); },
-          [](Mesh& m) { PMP::fast_feature_preserving_denoising(m); },
-          [](Mesh& m) { PMP::bilateral_normal_denoising(m); },
-          [](Mesh& m) { PMP::l0_denoising(m); },
-          [](Mesh& m) { PMP::guided_normal_denoising(m); }};
+  const std::vector<std::function<void(Mesh&)>> methods = {
+      [](Mesh& m) { PMP::bilateral_mesh_denoising(m); },
+      [](Mesh& m) { PMP::non_iterative_denoising(m); },
+      [](Mesh& m) { PMP::fast_feature_preserving_denoising(m); },
+      [](Mesh& m) { PMP::bilateral_normal_denoising(m); },
+      [](Mesh& m) { PMP::l0_denoising(m); },
+      [](Mesh& m) { PMP::guided_normal_denoising(m); }};
+  std::vector<double> errors;
+  for(const auto& method : methods)
+  {
+    Mesh m = in.noisy;
+    method(m);
+    errors.push_back(PMP::face_normal_error(m, in.reference));
+  }
+  return errors;
 }
 
 int main(int argc, char** argv)
@@ -282,26 +292,14 @@ int main(int argc, char** argv)
   if(wide)
   {
     std::printf("| input | noise | wide grid best E_n | at (sigma, r/d, k, v) | best classic default E_n (method) |\n|---|---|---|---|---|\n");
-    const char* names[] = {"FDC03", "JDD03", "SRML07", "ZFAT11", "HS13", "ZDZ15"};
     for(const Input& in : inputs)
     {
       const Grid_best g = grid_search(in, trace, wide_grid());
-      std::size_t best = 0;
-      double best_En = 1e30;
-      const std::vector<std::function<void(Mesh&)>> classic = classic_methods();
-      for(std::size_t c = 0; c < classic.size(); ++c)
-      {
-        Mesh m = in.noisy;
-        classic[c](m);
-        const double En = PMP::face_normal_error(m, in.reference);
-        if(En < best_En)
-        {
-          best_En = En;
-          best = c;
-        }
-      }
+      const std::vector<double> classic = classic_errors(in);
+      const std::size_t best = std::size_t(std::min_element(classic.begin(), classic.end()) - classic.begin());
+      const double best_En = classic[best];
       std::printf("| %s | %s | %.3f | (%.1f, %.1f, %u, %u) | %.3f (%s) |\n", in.name.c_str(), in.noise.c_str(), g.En,
-                  g.sigma, g.radius, g.k, g.v, best_En, names[best]);
+                  g.sigma, g.radius, g.k, g.v, best_En, classic_names[best]);
       std::fflush(stdout);
     }
     return 0;
@@ -380,16 +378,10 @@ int main(int argc, char** argv)
       const Grid_best g = grid_search(in, trace);
       std::printf(" %.3f | (%.2f, %.0f, %u) | %.3f |", g.En, g.sigma, g.radius, g.k, auto_En / g.En);
     }
-    const std::vector<std::function<void(Mesh&)>> classic = classic_methods();
-    double best_classic = 1e30;
-    for(const auto& method : classic)
-    {
-      Mesh c = in.noisy;
-      method(c);
-      const double En = PMP::face_normal_error(c, in.reference);
-      best_classic = std::min(best_classic, En);
+    const std::vector<double> classic = classic_errors(in);
+    for(const double En : classic)
       std::printf(" %.3f |", En);
-    }
+    const double best_classic = *std::min_element(classic.begin(), classic.end());
     std::printf(" %.3f | %.3f |\n", best_classic, auto_En / best_classic);
     std::fflush(stdout);
   }

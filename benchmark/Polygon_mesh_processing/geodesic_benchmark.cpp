@@ -112,13 +112,13 @@ static Row run(const Mesh& reference, const Mesh& noisy, PMP::Intrinsic_path_str
     {
       D::Geodesic_path_statistics s;
       const double t = seconds([&] { D::geodesic_paths<Tag>(flat, fd, nb, options, &s); });
-      D::Geodesic_path_statistics& m = row.phases;
-      const bool first = r == 0;
-      row.phased_paths = first ? t : (std::min)(row.phased_paths, t);
-      m.patch_seconds = first ? s.patch_seconds : (std::min)(m.patch_seconds, s.patch_seconds);
-      m.tree_seconds = first ? s.tree_seconds : (std::min)(m.tree_seconds, s.tree_seconds);
-      m.clear_seconds = first ? s.clear_seconds : (std::min)(m.clear_seconds, s.clear_seconds);
-      m.query_seconds = first ? s.query_seconds : (std::min)(m.query_seconds, s.query_seconds);
+      auto keep_min = [r](double& kept, double v) { kept = r == 0 ? v : (std::min)(kept, v); };
+      keep_min(row.phased_paths, t);
+      for(double D::Geodesic_path_statistics::*f : {&D::Geodesic_path_statistics::patch_seconds,
+                                                     &D::Geodesic_path_statistics::tree_seconds,
+                                                     &D::Geodesic_path_statistics::clear_seconds,
+                                                     &D::Geodesic_path_statistics::query_seconds})
+        keep_min(row.phases.*f, s.*f);
     }
   }
   return row;

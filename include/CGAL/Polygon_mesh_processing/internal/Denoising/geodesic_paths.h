@@ -242,28 +242,28 @@ inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const V
   return squared_norm(ap - v * ab - w * ac);
 }
 
-// A stopwatch for Geodesic_path_options::time_phases: add_to() adds the
-// seconds since the last add_to() (or construction) to *target and restarts;
-// when not running, it reads no clock.
+// A stopwatch for Geodesic_path_options::time_phases: add_to(field) adds the
+// seconds since the last add_to() (or construction) to that field of
+// `statistics` and restarts; with no statistics it reads no clock.
 class Phase_clock
 {
 public:
-  explicit Phase_clock(bool running) : running_(running)
+  explicit Phase_clock(Geodesic_path_statistics* statistics) : statistics_(statistics)
   {
-    if(running_)
+    if(statistics_)
       last_ = std::chrono::steady_clock::now();
   }
-  void add_to(double* target)
+  void add_to(double Geodesic_path_statistics::*field)
   {
-    if(!running_ || target == nullptr)
+    if(!statistics_)
       return;
     const auto now = std::chrono::steady_clock::now();
-    *target += std::chrono::duration<double>(now - last_).count();
+    statistics_->*field += std::chrono::duration<double>(now - last_).count();
     last_ = now;
   }
 
 private:
-  bool running_;
+  Geodesic_path_statistics* statistics_;
   std::chrono::steady_clock::time_point last_;
 };
 
@@ -374,9 +374,9 @@ public:
   {
     source_ = i;
     ready_ = false;
-    Phase_clock clock(phases_ != nullptr);
+    Phase_clock clock(phases_);
     shortest_path_.clear(); // frees the sequence tree of the previous face
-    clock.add_to(phases_ ? &phases_->clear_seconds : nullptr);
+    clock.add_to(&Geodesic_path_statistics::clear_seconds);
     patch_.resize(0, 0, 0);
     global_.clear();
     ++stamp_;
@@ -434,7 +434,7 @@ public:
       ring_begin = ring_end;
     }
     const bool built = build_patch();
-    clock.add_to(phases_ ? &phases_->patch_seconds : nullptr);
+    clock.add_to(&Geodesic_path_statistics::patch_seconds);
     if(!built)
     {
       patch_.resize(0, 0, 0);
@@ -451,7 +451,7 @@ public:
       shortest_path_.clear();
       return false;
     }
-    clock.add_to(phases_ ? &phases_->tree_seconds : nullptr);
+    clock.add_to(&Geodesic_path_statistics::tree_seconds);
     ready_ = true;
     return true;
   }
@@ -480,7 +480,7 @@ public:
     events_.clear();
     Visitor visitor{this, &events_};
     double distance = -1.;
-    Phase_clock clock(phases_ != nullptr);
+    Phase_clock clock(phases_);
     try
     {
       distance = CGAL::to_double(shortest_path_
@@ -492,7 +492,7 @@ public:
     {
       return false;
     }
-    clock.add_to(phases_ ? &phases_->query_seconds : nullptr);
+    clock.add_to(&Geodesic_path_statistics::query_seconds);
     if(!(distance >= 0.) || !std::isfinite(distance) || events_.size() < 2 || events_.front().kind != Event::FACE ||
        events_.back().kind != Event::FACE || events_.back().far_face != source_)
       return false;
