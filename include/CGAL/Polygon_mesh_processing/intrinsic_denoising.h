@@ -403,28 +403,33 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
     }
     return report.automatic_parameters ? choice.kernel : D::Setup_defaults();
   };
+  // How one schedule of the automatic mode stops: the stopping rule is not
+  // tested before `min_iterations`; `max_iterations` (if not 0) replaces the
+  // automatic mode's limit; without `displacement_test` only the convergence
+  // of the normals (under `change_tolerance`) stops.
+  struct Schedule_stop
+  {
+    unsigned int min_iterations;
+    unsigned int max_iterations = 0;
+    bool displacement_test = true;
+    double change_tolerance = D::Automatic_rules::change_tolerance;
+  };
   // One denoising from the input with the defaults `choose(mesh)` for the
-  // parameters not given, the stopping rule not tested before
-  // `min_iterations`; the report describes it. Returns the vertices and
-  // the last filtered normals in input order, and with `measure_shape`, if
-  // there is noise to remove, the flat-edge fraction of the result
-  // (Automatic_rules).
+  // parameters not given, stopped as `stop` says; the report describes it.
+  // Returns the vertices and the last filtered normals in input order, and
+  // with `measure_shape`, if there is noise to remove, the flat-edge fraction
+  // of the result (Automatic_rules).
   struct Run
   {
     std::vector<D::Vec3> points, normals;
     double flat_fraction = -1.;
     std::size_t path_nodes = 0;
   };
-  // `max_iterations` (if not 0) replaces the automatic mode's limit, and
-  // without `displacement_test` only the convergence of the normals (under
-  // `change_tolerance`) stops.
-  auto run = [&](const auto& choose, bool measure_shape, unsigned int min_iterations, unsigned int max_iterations = 0,
-                 bool displacement_test = true,
-                 double change_tolerance = D::Automatic_rules::change_tolerance) {
+  auto run = [&](const auto& choose, bool measure_shape, const Schedule_stop& stop) {
     D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname, choose);
     const unsigned int iterations = choose_parameter(
         get_parameter(np, internal_np::number_of_iterations),
-        report.automatic_parameters ? (max_iterations > 0 ? max_iterations : choice.max_iterations)
+        report.automatic_parameters ? (stop.max_iterations > 0 ? stop.max_iterations : choice.max_iterations)
                                     : D::Intrinsic_defaults::iterations);
     report.sigma_spatial = s.kernel.sigma_spatial;
     report.sigma_range = s.kernel.sigma_range;
@@ -462,15 +467,15 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
       if(!stop_rule || it + 1 == iterations)
         continue;
       // the stopping rule (not before min_iterations unless there is no noise)
-      if(it + 1 >= min_iterations || report.noise_level < D::Automatic_rules::min_noise)
+      if(it + 1 >= stop.min_iterations || report.noise_level < D::Automatic_rules::min_noise)
       {
         report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
-        if(displacement_test && report.displacement >= target_displacement)
+        if(stop.displacement_test && report.displacement >= target_displacement)
         {
           report.stop_reason = Intrinsic_stop_reason::NOISE_LEVEL_REACHED;
           break;
         }
-        if(!previous.empty() && D::mean_angle_degrees(filtered, previous) < change_tolerance)
+        if(!previous.empty() && D::mean_angle_degrees(filtered, previous) < stop.change_tolerance)
         {
           report.stop_reason = Intrinsic_stop_reason::CONVERGED;
           break;
@@ -503,7 +508,7 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
       !is_default_parameter<NamedParameters, internal_np::neighbor_radius_t>::value ||
       !is_default_parameter<NamedParameters, internal_np::relative_neighbor_radius_t>::value;
   const bool shape_test = report.automatic_parameters && stop_rule && !kernel_or_radius_given;
-  Run result = run(choose_defaults, shape_test, D::Automatic_rules::min_iterations);
+  Run result = run(choose_defaults, shape_test, Schedule_stop{D::Automatic_rules::min_iterations});
   if(shape_test)
   {
     report.flat_edge_fraction = result.flat_fraction; // -1 if not measured
@@ -514,7 +519,8 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
       D::Setup_defaults smooth;
       smooth.sigma_spatial = smooth.sigma_range = D::Automatic_rules::smooth_sigma;
       smooth.relative_radius = D::Automatic_rules::smooth_relative_radius;
-      result = run([&smooth](const D::Flat_mesh&) { return smooth; }, false, D::Automatic_rules::smooth_min_iterations);
+      result = run([&smooth](const D::Flat_mesh&) { return smooth; }, false,
+                   Schedule_stop{D::Automatic_rules::smooth_min_iterations});
     }
     else if(result.flat_fraction >= D::Automatic_rules::flat_faced_fraction &&
             D::flat_faced_affordable(result.path_nodes, choice.kernel.relative_radius))
@@ -523,9 +529,9 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
       report.discarded_iterations = report.iterations;
       D::Setup_defaults flat = choice.kernel;
       flat.relative_radius = D::Automatic_rules::flat_faced_relative_radius;
-      result = run([&flat](const D::Flat_mesh&) { return flat; }, false, D::Automatic_rules::min_iterations,
-                   D::Automatic_rules::flat_faced_max_iterations, false,
-                   D::Automatic_rules::flat_faced_change_tolerance);
+      const Schedule_stop flat_stop{D::Automatic_rules::min_iterations, D::Automatic_rules::flat_faced_max_iterations,
+                                    false, D::Automatic_rules::flat_faced_change_tolerance};
+      result = run([&flat](const D::Flat_mesh&) { return flat; }, false, flat_stop);
     }
   }
   maps.write_points(tmesh, result.points);
