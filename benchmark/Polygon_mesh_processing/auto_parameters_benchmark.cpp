@@ -330,7 +330,7 @@ int main(int argc, char** argv)
     }
     return 0;
   }
-  std::printf("| input | kind | noise | faces | noisy E_n | auto E_n | estimated noise | flat edges | schedule | first schedule E_n | sigma | r (d) | k | stop | auto s | fixed defaults E_n |"
+  std::printf("| input | kind | noise | faces | noisy E_n | auto E_n | residual RMS | - | candidates (sigma/r/k, kept starred) | estimate-rule E_n | sigma | r (d) | k | stop | auto s | fixed defaults E_n |"
               "%s FDC03 | JDD03 | SRML07 | ZFAT11 | HS13 | ZDZ15 | best classic | auto / best classic |\n",
               grid ? " grid best E_n | at (sigma, r, k) | auto / grid |" : "");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|%s---|---|---|---|---|---|---|---|\n",
@@ -342,24 +342,25 @@ int main(int argc, char** argv)
     const PMP::Intrinsic_denoising_report r = PMP::intrinsic_denoising<Tag>(a);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const double auto_En = PMP::face_normal_error(a, in.reference);
-    const char* stop = r.stop_reason == PMP::Intrinsic_stop_reason::NOISE_LEVEL_REACHED ? "noise level"
-                       : r.stop_reason == PMP::Intrinsic_stop_reason::CONVERGED      ? "converged"
-                                                                                     : "limit";
-    // the shape test's flat-edge fraction, and the schedule kept (with the
-    // first schedule's discarded iterations)
-    char schedule[64];
-    if(r.smooth_surface)
-      std::snprintf(schedule, sizeof schedule, "smooth (after %u)", r.discarded_iterations);
-    else if(r.flat_faced)
-      std::snprintf(schedule, sizeof schedule, "flat-faced (after %u)", r.discarded_iterations);
-    else
-      std::snprintf(schedule, sizeof schedule, "flat");
-    // what the first schedule alone gives (its sigma given: no shape test)
-    std::string first = "(kept)";
-    if(r.smooth_surface || r.flat_faced)
+    const char* stop = r.stop_reason == PMP::Intrinsic_stop_reason::NOISE_LEVEL_REACHED   ? "noise level"
+                       : r.stop_reason == PMP::Intrinsic_stop_reason::CONVERGED           ? "converged"
+                       : r.stop_reason == PMP::Intrinsic_stop_reason::RESIDUAL_CORRELATED ? "residual"
+                                                                                           : "limit";
+    // the selection's candidates: sigma / r / iterations, the kept one starred
+    std::string schedule;
+    for(std::size_t c = 0; c < r.candidates.size(); ++c)
+    {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%s%.1f/%.0fd/%u", c == r.chosen_candidate ? "*" : "", r.candidates[c].sigma,
+                    r.candidates[c].relative_neighbor_radius, r.candidates[c].iterations);
+      schedule += (c > 0 ? " " : "") + std::string(buf);
+    }
+    // what the rule of a given kernel gives (sigma from the noise estimate)
+    std::string first;
     {
       Mesh f = in.noisy;
-      const double sigma = D::automatic_choice(r.noise_level).kernel.sigma_spatial;
+      const D::Flat_mesh fm = flat(in.noisy);
+      const double sigma = D::automatic_choice(D::estimate_noise<Tag>(fm).relative_noise).kernel.sigma_spatial;
       PMP::intrinsic_denoising<Tag>(f, CGAL::parameters::sigma_spatial(sigma).sigma_range(sigma));
       char buf[32];
       std::snprintf(buf, sizeof buf, "%.3f", PMP::face_normal_error(f, in.reference));
@@ -367,7 +368,7 @@ int main(int argc, char** argv)
     }
     std::printf("| %s | %s | %s | %zu | %.3f | **%.3f** | %.3f | %.3f | %s | %s | %.3f | %.2f | %u | %s | %.2f |",
                 in.name.c_str(), in.kind.c_str(), in.noise.c_str(), std::size_t(num_faces(a)),
-                PMP::face_normal_error(in.noisy, in.reference), auto_En, r.noise_level, r.flat_edge_fraction, schedule,
+                PMP::face_normal_error(in.noisy, in.reference), auto_En, r.noise_level, 0., schedule.c_str(),
                 first.c_str(), r.sigma_spatial, r.relative_neighbor_radius, r.iterations, stop, seconds);
     Mesh fixed = in.noisy;
     PMP::intrinsic_denoising<Tag>(fixed, CGAL::parameters::automatic_parameters(false));

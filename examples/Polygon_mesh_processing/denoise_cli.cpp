@@ -92,19 +92,21 @@ DESCRIPTION
     follow the filtered normals (eq. 10), and the two steps are repeated.
     Sharp edges and corners are kept; noise is removed.
 
-    By default the parameters are automatic: the noise level of INPUT is
-    estimated (or given with --noise-level), sigma_s, sigma_r and r are
-    derived from it, and the iterations stop when the vertices have moved by
-    about the noise level or the filtered normals no longer change. If the
-    result is not piecewise flat (under half of its edges flatter than 1
-    degree: an organic or irregular surface), INPUT is denoised again with a
-    wide kernel on a small radius (sigma 1.4, r = 2d); if it is made of large
-    flat faces (at least 90% of its edges that flat), INPUT is denoised again
-    with more smoothing (r = 8d, up to 150 iterations). Only the options given
-    on the command line replace the automatic choices; --fixed uses the
-    paper's fixed parameters instead (k = 30, v = 2, r = 4d, sigma = 0.4, no
-    stopping rule). After the run, the parameters used, the noise level, the
-    shape test and why the iterations stopped are printed.
+    By default the parameters are automatic: four candidate settings (sigma
+    0.5 and 0.8 on r = 3d, 0.8 on r = 6d, 1.4 on r = 2d) run on INPUT, each
+    stopped before the residual (input minus result) becomes correlated across
+    edges, which is when it starts to remove shape rather than noise; among
+    the flattest results (if at least 30% of their edges are flatter than 1
+    degree) or else among all, the one whose residual is the least correlated
+    at a common residual size is kept. If some of sigma, r, k or the noise
+    level are given, the others follow the noise level of INPUT (estimated, or
+    given with --noise-level), and unless k is given the iterations stop when
+    the vertices have moved by about the noise level or the filtered normals
+    no longer change. Only the options given on the command line replace the
+    automatic choices; --fixed uses the paper's fixed parameters instead (k =
+    30, v = 2, r = 4d, sigma = 0.4, no stopping rule). After the run, the
+    candidates and the one kept (or the noise level), the parameters used and
+    why the iterations stopped are printed.
 
     Neighbourhoods and paths are computed once, on the input. Paths follow the
     paper's square pattern (section 4) by default; --paths chooses the exact
@@ -136,7 +138,8 @@ DESCRIPTION
     standard error. While the intrinsic filter runs, a progress bar
     ([#####.....] 12/100 iterations 0.8 s) is redrawn on standard error after
     each iteration if it is a terminal (or with --progress); the limit shown is
-    the iteration limit, the stopping rule may end the run earlier.
+    the iteration limit, the stopping rule may end the run earlier (in the
+    automatic selection the bar counts the candidates instead).
 
 )";
 
@@ -181,16 +184,15 @@ po::options_description make_options(Settings &s)
        "output mesh (.off, .obj, .ply or .stl); default: INPUT_denoised.off next to INPUT")
     ("fixed", po::bool_switch(&s.fixed),
        "the paper's fixed parameters (k = 30, v = 2, r = 4d, sigma = 0.4) instead of the automatic mode, which "
-       "estimates the noise level, derives sigma_s, sigma_r and r from it and stops when the displacement reaches "
-       "the noise level or the normals converge")
+       "selects sigma, r and k from the residuals of four candidate settings")
     ("noise-level", po::value(&s.noise_level)->value_name("X"),
        "noise level (standard deviation relative to the mean edge length) used by the automatic mode and the "
        "stopping rule instead of the estimate")
     ("stop-when-converged", po::value(&s.stop_when_converged)->value_name("yes|no"),
        "stopping rule on or off (default: on in the automatic mode without --iterations, off otherwise)")
     ("iterations,k", po::value(&s.iterations)->value_name("K"),
-       "k_iter: normal filtering passes (0: no change); default: automatic (at most the library's limit, with "
-       "the stopping rule), 30 with --fixed")
+       "k_iter: normal filtering passes (0: no change); default: automatic (chosen by the selection, or at most "
+       "the library's limit with the stopping rule), 30 with --fixed")
     ("vertex-iterations,v", po::value(&s.vertex_iterations)->value_name("V")->default_value(s.vertex_iterations),
        "v_iter: vertex update steps (eq. 10) after each pass")
     ("sigma-spatial", po::value(&s.sigma_spatial)->value_name("S"),

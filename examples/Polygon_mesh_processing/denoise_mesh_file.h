@@ -261,24 +261,33 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
   using Reason = CGAL::Polygon_mesh_processing::Intrinsic_stop_reason;
   std::ostringstream out;
   out << "parameters: " << (r.automatic_parameters ? "automatic" : "fixed") << "\n";
+  if(!r.candidates.empty())
+  {
+    // the automatic selection: every candidate, its stop and its score
+    out << "selection: " << r.candidates.size() << " candidates, each stopped before its residual correlation across "
+        << "edges reached the threshold; among the flattest results (if piecewise flat), the lowest correlation at a "
+        << "common residual RMS wins\n";
+    for(std::size_t c = 0; c < r.candidates.size(); ++c)
+    {
+      const auto& k = r.candidates[c];
+      out << (c == r.chosen_candidate ? "  * " : "    ") << "sigma " << k.sigma << ", r " << k.relative_neighbor_radius
+          << " d: " << k.iterations << " iterations" << (k.stopped_by_correlation ? "" : " (limit)")
+          << ", residual RMS " << k.residual_rms << ", correlation " << k.residual_correlation << ", flat edges "
+          << k.flat_share << ", score " << k.score << "\n";
+    }
+  }
   if(r.noise_level_estimated || r.noise_level > 0. || r.automatic_parameters)
     out << "noise level: " << r.noise_level << " x mean edge length ("
-        << (r.noise_level_estimated ? "estimated" : "given") << ")\n";
-  if(r.flat_edge_fraction >= 0.)
-    out << "shape: " << r.flat_edge_fraction << " of the edges flat after the first schedule ("
-        << (r.smooth_surface ? "smooth surface: denoised again with the smooth-surface schedule, "
-                                   + std::to_string(r.discarded_iterations) + " iterations discarded"
-            : r.flat_faced   ? "large flat faces: denoised again with the flat-faced schedule, "
-                                   + std::to_string(r.discarded_iterations) + " iterations discarded"
-                             : "piecewise flat: kept")
-        << ")\n";
+        << (!r.candidates.empty() ? "residual RMS of the kept candidate"
+            : r.noise_level_estimated ? "estimated" : "given") << ")\n";
   out << "sigma_s = " << r.sigma_spatial << ", sigma_r = " << r.sigma_range << "\n";
   out << "r = " << r.neighbor_radius << " (" << r.relative_neighbor_radius << " d), v_iter = " << r.vertex_iterations
       << "\n";
   out << "iterations: " << r.iterations << " of at most " << r.maximum_iterations << ", stopped: "
-      << (r.stop_reason == Reason::NOISE_LEVEL_REACHED ? "displacement reached the noise level"
-          : r.stop_reason == Reason::CONVERGED         ? "converged"
-                                                       : "iteration limit");
+      << (r.stop_reason == Reason::NOISE_LEVEL_REACHED   ? "displacement reached the noise level"
+          : r.stop_reason == Reason::CONVERGED           ? "converged"
+          : r.stop_reason == Reason::RESIDUAL_CORRELATED ? "the residual became correlated across edges"
+                                                         : "iteration limit");
   if(r.stop_reason != Reason::ITERATION_LIMIT || r.displacement > 0.)
     out << " (RMS displacement " << r.displacement << " x mean edge length)";
   out << "\n";

@@ -1,4 +1,4 @@
-// Tests of add_gaussian_noise() and add_impulsive_noise().
+// Tests of add_gaussian_noise(), add_impulsive_noise() and add_depth_scan_noise().
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
@@ -10,7 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
+
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -89,4 +92,62 @@ TEST(AddNoise, BadArgumentsThrowAndLeaveTheMesh)
   EXPECT_EQ(before, positions(mesh));
   Mesh empty;
   EXPECT_NO_THROW(PMP::add_gaussian_noise(empty, 0.3));
+}
+
+// Depth-scan noise: seeded; every vertex moves along the line from one
+// camera point to it (the lines meet in a point, found here by least
+// squares); the displacement is of the order of sigma_E times the mean edge
+// length; the same for Surface_mesh and Polyhedron_3; bad sigma throws.
+TEST(AddNoise, DepthScanNoiseAlongRaysFromOneCamera)
+{
+  Mesh a = denoising_test::cube<Mesh>(8), b = a, c = a;
+  const auto before = positions(a);
+  double edge_sum = 0;
+  for(auto e : edges(a))
+    edge_sum += std::sqrt(CGAL::squared_distance(a.point(source(e, a)), a.point(target(e, a))));
+  const double mean_edge = edge_sum / num_edges(a);
+  PMP::add_depth_scan_noise(a, 0.3, CGAL::parameters::random_seed(5));
+  PMP::add_depth_scan_noise(b, 0.3, CGAL::parameters::random_seed(5));
+  PMP::add_depth_scan_noise(c, 0.3, CGAL::parameters::random_seed(6));
+  const auto after = positions(a);
+  EXPECT_EQ(after, positions(b));
+  EXPECT_NE(after, positions(c));
+  Polyhedron p = denoising_test::cube<Polyhedron>(8);
+  PMP::add_depth_scan_noise(p, 0.3, CGAL::parameters::random_seed(5));
+  EXPECT_EQ(after, positions(p));
+
+  // the camera: the point nearest to every displacement line
+  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> lines;
+  double sum2 = 0.;
+  for(std::size_t i = 0; i < after.size(); ++i)
+  {
+    const Eigen::Vector3d p0(before[i].x(), before[i].y(), before[i].z());
+    const Eigen::Vector3d d(after[i].x() - before[i].x(), after[i].y() - before[i].y(), after[i].z() - before[i].z());
+    sum2 += d.squaredNorm();
+    if(d.norm() == 0.)
+      continue;
+    const Eigen::Vector3d u = d.normalized();
+    const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - u * u.transpose();
+    A += P;
+    rhs += P * p0;
+    lines.emplace_back(p0, u);
+  }
+  ASSERT_GT(lines.size(), after.size() / 2);
+  const Eigen::Vector3d camera = A.ldlt().solve(rhs);
+  for(const auto& l : lines)
+  {
+    const Eigen::Vector3d w = camera - l.first;
+    EXPECT_LT((w - w.dot(l.second) * l.second).norm(), 1e-6 * w.norm());
+  }
+  const double rms = std::sqrt(sum2 / double(after.size()));
+  EXPECT_GT(rms, 0.5 * 0.3 * mean_edge);
+  EXPECT_LT(rms, 2. * 0.3 * mean_edge);
+
+  Mesh d = denoising_test::cube<Mesh>(3);
+  const auto d_before = positions(d);
+  EXPECT_THROW(PMP::add_depth_scan_noise(d, -0.1), std::invalid_argument);
+  EXPECT_THROW(PMP::add_depth_scan_noise(d, std::nan("")), std::invalid_argument);
+  EXPECT_EQ(d_before, positions(d));
 }

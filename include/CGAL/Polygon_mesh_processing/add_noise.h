@@ -1,18 +1,23 @@
 // Copyright (c) 2026 The intrinsic denoising package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Seeded, reproducible noise for evaluating denoisers, as in section 5.2 of
-// the intrinsic filter paper: vertices moved along their normals by Gaussian
-// noise of standard deviation sigma_E times the mean edge length.
+// Seeded, reproducible noise for evaluating denoisers: as in section 5.2 of
+// the intrinsic filter paper, vertices moved along their normals by Gaussian
+// noise of standard deviation sigma_E times the mean edge length (on every
+// vertex or on a random fraction of them); and a simulation of a range
+// scanner's noise, along the rays from a virtual camera.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_ADD_NOISE_H
 #define CGAL_POLYGON_MESH_PROCESSING_ADD_NOISE_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -78,6 +83,92 @@ void add_noise_along_normals(TriangleMesh& tmesh, double relative_sigma, double 
   maps.write_points(tmesh, m.points);
 }
 
+
+// Depth-scan noise (see add_depth_scan_noise()): each vertex moves along the
+// ray from a camera to it by the sum of
+// - a Gaussian term whose standard deviation grows as the square of the depth
+//   (structured-light and time-of-flight sensors: relative_sigma at the depth
+//   of the bounding-box centre);
+// - a low-frequency term, half of relative_sigma in amplitude: three plane
+//   waves of random directions and phases, of wavelength 12 mean edge
+//   lengths (the smooth ripples of a depth map's reconstruction);
+// - outliers: 2% of the vertices get an extra Gaussian term of four times
+//   relative_sigma.
+struct Depth_scan_model
+{
+  static constexpr double camera_distance = 2.; // in bounding-box diagonals from its centre
+  static constexpr double low_frequency_amplitude = 0.5;
+  static constexpr double wavelength = 12.; // in mean edge lengths
+  static constexpr int waves = 3;
+  static constexpr double outlier_fraction = 0.02;
+  static constexpr double outlier_scale = 4.;
+};
+
+template <typename TriangleMesh, typename NamedParameters>
+void add_depth_scan_noise_impl(TriangleMesh& tmesh, double relative_sigma, const NamedParameters& np,
+                               const char* fname)
+{
+  using M = Depth_scan_model;
+  if(faces(tmesh).empty())
+    return;
+  if(!(relative_sigma >= 0.) || !std::isfinite(relative_sigma))
+    throw std::invalid_argument(std::string(fname) + ": the noise level must be a non-negative finite number.");
+  const Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
+  const std::uint64_t seed = parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u);
+  Flat_mesh m = maps.flat(tmesh, fname);
+  const std::vector<char> fixed = maps.constrained(tmesh);
+  const double edge = mean_edge_length(m);
+  const double sigma = relative_sigma * edge;
+  if(m.points.empty() || !(sigma > 0.))
+    return;
+  Vec3 lo = m.points[0], hi = m.points[0];
+  for(const Vec3& p : m.points)
+    for(int c = 0; c < 3; ++c)
+    {
+      lo[c] = std::min(lo[c], p[c]);
+      hi[c] = std::max(hi[c], p[c]);
+    }
+  const Vec3 centre = 0.5 * (lo + hi);
+  const double diagonal = norm(hi - lo);
+  Seeded_gaussian gaussian(seed);
+  // the camera: a random direction from the centre (seeded), looking at it
+  Vec3 axis{gaussian(), gaussian(), gaussian()};
+  if(!(squared_norm(axis) > 0.))
+    axis = Vec3{0., 0., 1.};
+  axis = (1. / norm(axis)) * axis;
+  const Vec3 camera = centre + (M::camera_distance * diagonal) * axis;
+  const double centre_depth = M::camera_distance * diagonal;
+  Vec3 wave_dir[M::waves];
+  double phase[M::waves];
+  for(int w = 0; w < M::waves; ++w)
+  {
+    Vec3 d{gaussian(), gaussian(), gaussian()};
+    wave_dir[w] = squared_norm(d) > 0. ? (1. / norm(d)) * d : Vec3{1., 0., 0.};
+    phase[w] = 6.283185307179586476925286766559 * gaussian.uniform();
+  }
+  const double k = 6.283185307179586476925286766559 / (M::wavelength * edge);
+  for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
+  {
+    // draw for every vertex, as add_noise_along_normals() does
+    const double g = gaussian(), outlier = gaussian();
+    const bool is_outlier = gaussian.uniform() <= M::outlier_fraction;
+    if(fixed[v])
+      continue;
+    const Vec3 ray = m.points[v] - camera;
+    const double depth = norm(ray);
+    if(!(depth > 0.))
+      continue;
+    const double scale = (depth / centre_depth) * (depth / centre_depth);
+    double low = 0.;
+    for(int w = 0; w < M::waves; ++w)
+      low += std::sin(k * dot(m.points[v] - centre, wave_dir[w]) + phase[w]);
+    low *= M::low_frequency_amplitude / std::sqrt(double(M::waves) / 2.); // unit RMS before the amplitude
+    const double amount = sigma * (scale * g + low + (is_outlier ? M::outlier_scale * outlier : 0.));
+    m.points[v] = m.points[v] + (amount / depth) * ray;
+  }
+  maps.write_points(tmesh, m.points);
+}
+
 } // namespace Denoising
 } // namespace internal
 
@@ -135,6 +226,32 @@ void add_impulsive_noise(TriangleMesh& tmesh, double fraction, double relative_s
                          const NamedParameters& np = parameters::default_values())
 {
   internal::Denoising::add_noise_along_normals(tmesh, relative_sigma, fraction, np, "add_impulsive_noise()");
+}
+
+/*!
+  \ingroup PMP_denoising_grp
+
+  \brief simulated depth-scan noise: every vertex of `tmesh` moves along the
+  ray from a virtual camera to it, as the depth measured by a range sensor
+  errs, rather than along its normal.
+
+  The camera sits at twice the bounding-box diagonal from the box's centre,
+  in a direction drawn from the seed. A vertex's displacement is the sum of
+  a Gaussian term whose standard deviation is `relative_sigma` times the mean
+  edge length at the depth of the box's centre and grows as the square of
+  the depth (nearer vertices are less noisy), a low-frequency term (three
+  plane waves of random directions, wavelength 12 mean edge lengths,
+  amplitude half of that standard deviation), and, on 2% of the vertices, an
+  outlier term of four times that standard deviation. Seeded and reproducible
+  like `add_gaussian_noise()`, with the same named parameters.
+
+  \pre as for `add_gaussian_noise()`.
+*/
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+void add_depth_scan_noise(TriangleMesh& tmesh, double relative_sigma,
+                          const NamedParameters& np = parameters::default_values())
+{
+  internal::Denoising::add_depth_scan_noise_impl(tmesh, relative_sigma, np, "add_depth_scan_noise()");
 }
 
 } // namespace Polygon_mesh_processing

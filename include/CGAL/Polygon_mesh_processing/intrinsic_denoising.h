@@ -9,6 +9,7 @@
 #define CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
 
@@ -33,7 +34,38 @@ enum class Intrinsic_stop_reason {
   NOISE_LEVEL_REACHED,
   /// stopping rule: the filtered normals changed by less than
   /// `Intrinsic_denoising_report::change_tolerance` degrees on average
-  CONVERGED
+  CONVERGED,
+  /// the automatic selection: the residual between the input and the result
+  /// became correlated across edges (shape, not noise, was being removed)
+  RESIDUAL_CORRELATED
+};
+
+/// \ingroup PMP_denoising_grp
+/// One candidate setting of the automatic selection of
+/// `intrinsic_denoising()`, and the evidence it was judged on.
+struct Intrinsic_candidate_report
+{
+  /// \f$\sigma_s = \sigma_r\f$ of the candidate
+  double sigma = 0.;
+  /// its radius relative to \f$d\f$
+  double relative_neighbor_radius = 0.;
+  /// the iterations it ran (it stopped at the first whose residual correlation
+  /// reached the threshold, or at the limit)
+  unsigned int iterations = 0;
+  /// whether the residual correlation stopped it (`false`: the limit)
+  bool stopped_by_correlation = false;
+  /// the RMS of the residual (input minus result) at its stop, relative to the
+  /// mean edge length
+  double residual_rms = 0.;
+  /// the residual correlation across edges at its stop
+  double residual_correlation = 0.;
+  /// the share of the interior edges of its result whose faces differ by less
+  /// than 1 degree (-1: no interior edge)
+  double flat_share = -1.;
+  /// its score: the residual correlation where its residual RMS reached the
+  /// common comparison level (the lowest wins, among the candidates whose
+  /// `flat_share` is within 0.05 of the largest if that is at least 0.3)
+  double score = 0.;
 };
 
 /// \ingroup PMP_denoising_grp
@@ -63,28 +95,87 @@ struct Intrinsic_denoising_report
   /// with the stopping rule: the RMS vertex displacement from the input at the
   /// end, relative to the mean edge length
   double displacement = 0.;
-  /// the automatic mode's shape test: the fraction of interior edges with a
-  /// dihedral angle under 1 degree after its first schedule (-1: not made,
-  /// because the mode or the stopping rule is off, a parameter of the kernel
-  /// or the radius was given, or the noise level is below 0.02)
-  double flat_edge_fraction = -1.;
-  /// whether that fraction (under 0.5: not a piecewise flat surface) made the
-  /// automatic mode denoise the input again with its smooth-surface schedule;
-  /// the values above then describe that second run
-  bool smooth_surface = false;
-  /// whether that fraction (at least 0.9: a surface of large flat faces) made
-  /// the automatic mode denoise the input again with its flat-faced schedule;
-  /// the values above then describe that second run (`false` with a fraction
-  /// of at least 0.9: skipped, as it would hold over \f$2^{28}\f$ path nodes,
-  /// about a million faces)
-  bool flat_faced = false;
-  /// iterations of the first schedule whose result the second run replaced
-  unsigned int discarded_iterations = 0;
+  /// the candidates of the automatic selection (empty if it did not run:
+  /// see `intrinsic_denoising()` for when it does), in the order they ran
+  std::vector<Intrinsic_candidate_report> candidates;
+  /// the index in `candidates` of the one kept
+  std::size_t chosen_candidate = 0;
   /// the constants of the stopping rule
   static constexpr double displacement_fraction = internal::Denoising::Automatic_rules::displacement_fraction;
   static constexpr double change_tolerance = internal::Denoising::Automatic_rules::change_tolerance;
 };
 
+
+namespace internal {
+namespace Denoising {
+
+// The automatic selection of intrinsic_denoising() (automatic_selection.h):
+// runs the candidates of Selection_rules, sharing the paths of each radius,
+// keeps the one chosen, and describes all of them in `report`.
+template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters, typename Maps>
+Candidate_run select_automatically(const TriangleMesh& tmesh, const NamedParameters& np, const Maps& maps,
+                                   unsigned int vertex_iterations, Intrinsic_denoising_report& report,
+                                   const char* fname)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  constexpr bool keep_normals = !is_default_parameter<NamedParameters, internal_np::face_normal_t>::value;
+  const auto progress = choose_parameter(get_parameter(np, internal_np::progress_callback), No_progress());
+  Automatic_selection<ConcurrencyTag> selection(
+      vertex_iterations, choose_parameter(get_parameter(np, internal_np::prevent_folds), true), keep_normals);
+  const std::vector<char> constrained = maps.constrained(tmesh);
+  constexpr std::size_t n = Selection_rules::number_of_candidates;
+  for(std::size_t c = 0; c < n; ++c)
+  {
+    const Selection_rules::Candidate& candidate = Selection_rules::candidates[c];
+    if(c == 0 || candidate.relative_radius != Selection_rules::candidates[c - 1].relative_radius)
+    {
+      Setup_defaults defaults;
+      defaults.sigma_spatial = defaults.sigma_range = candidate.sigma;
+      defaults.relative_radius = candidate.relative_radius;
+      selection.setup_paths(make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname,
+                                                                 [&defaults](const Flat_mesh&) { return defaults; }),
+                            constrained);
+    }
+    selection.run(candidate.sigma);
+    progress(c + 1, n);
+  }
+  const std::size_t best = selection.choose();
+  std::vector<Candidate_run>& runs = selection.runs();
+  report.candidates.clear();
+  for(const Candidate_run& r : runs)
+  {
+    Intrinsic_candidate_report c;
+    c.sigma = r.sigma;
+    c.relative_neighbor_radius = r.relative_radius;
+    c.iterations = r.iterations;
+    c.stopped_by_correlation = r.stopped_by_correlation;
+    c.residual_rms = r.iterations > 0 ? r.trajectory[r.iterations - 1].rms : 0.;
+    c.residual_correlation = r.iterations > 0 ? r.trajectory[r.iterations - 1].correlation : 0.;
+    c.flat_share = r.flat_share;
+    c.score = r.score;
+    report.candidates.push_back(c);
+  }
+  report.chosen_candidate = best;
+  const Intrinsic_candidate_report& w = report.candidates[best];
+  report.mean_edge_length = selection.mean_edge_length_of_input();
+  report.noise_level = w.residual_rms;
+  report.noise_level_estimated = true;
+  report.displacement = w.residual_rms;
+  report.sigma_spatial = report.sigma_range = w.sigma;
+  report.relative_neighbor_radius = w.relative_neighbor_radius;
+  report.neighbor_radius = w.relative_neighbor_radius * selection.centroid_distance();
+  report.vertex_iterations = vertex_iterations;
+  report.maximum_iterations = Selection_rules::max_iterations;
+  report.iterations = w.iterations;
+  report.stop_reason =
+      w.stopped_by_correlation ? Intrinsic_stop_reason::RESIDUAL_CORRELATED : Intrinsic_stop_reason::ITERATION_LIMIT;
+  return std::move(runs[best]);
+}
+
+} // namespace Denoising
+} // namespace internal
 
 /*!
   \ingroup PMP_denoising_grp
@@ -231,40 +322,58 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
   The mesh is read once and written once, at the end: if an exception is
   thrown, `tmesh` and the property maps are left unchanged.
 
-  <b>Automatic mode (the default).</b> The noise level is estimated from the
+  <b>Automatic mode (the default): selection from the residual.</b> When
+  \f$\sigma_s\f$, \f$\sigma_r\f$, the radius, `number_of_iterations` and
+  `noise_level` are all left to it, four candidate settings run on the
+  input, from a kernel that keeps sharp edges to one that is almost a
+  Gaussian smoothing of the normals: \f$\sigma_s = \sigma_r\f$ = 0.5 and
+  0.8 on \f$r = 3d\f$ (sharing their paths), 0.8 on \f$r = 6d\f$ and 1.4
+  on \f$r = 2d\f$, each with \f$v_{iter}\f$ as given (default 2). Every
+  decision is read from the input and the candidates' results, with no noise
+  model and no ground truth:
+  - <em>When a candidate stops.</em> After each iteration the correlation
+    of the residual (input minus result) across the mesh's edges is measured:
+    the sum over edges of \f$r_u \cdot r_v\f$ over the sum of
+    \f$(|r_u|^2 + |r_v|^2)/2\f$. Removing noise that is independent from
+    vertex to vertex leaves it slightly negative; removing shape (flattened
+    curvature, rounded edges) makes it rise, as a smooth residual agrees
+    across edges. A candidate keeps the iterate before the first whose
+    correlation reaches \f$-0.05\f$ (at most 40 iterations; a noise-free
+    mesh is kept as it is).
+  - <em>Which candidate is kept.</em> If the flattest result has at least
+    30% of its interior edges under 1 degree (piecewise flat: noise leaves
+    no edge that flat, a curved surface few), only the candidates within
+    0.05 of that share are compared; otherwise all are. They are compared
+    where each has removed the same amount, half the smallest residual RMS
+    at which a candidate stopped: the one with the lowest residual
+    correlation there removed the most noise and the least shape, and is
+    kept.
+  The report lists every candidate with its iterations, residual RMS,
+  correlation, flat share and score, and the one kept; its `noise_level` is
+  the kept candidate's residual RMS relative to the mean edge length. The
+  user manual gives the distribution of the result against a per-input grid
+  search, the fixed mode and the classic methods on the development corpus
+  (`corpus_benchmark`: the triangle meshes of CGAL's data set with 1,000 to
+  60,000 faces, with Gaussian, impulsive and simulated depth-scan noise), and
+  where the selection fails.
+
+  <b>Automatic mode with some parameters given.</b> If some of those are
+  given, the others are derived from the noise level, estimated from the
   mesh alone (at each vertex a quadric height field is fitted by least
   squares to the vertex and its two rings, in the frame of the vertex normal;
   the residual's standard deviation, at the lower quartile over the vertices
-  and divided by 0.85, relative to the mean edge length: a quadric absorbs
-  smooth curvature and the low quantile ignores the vertices near sharp
-  edges). Every parameter not given is then derived from it:
+  and divided by 0.85, relative to the mean edge length) unless given:
   \f$\sigma_s = \sigma_r = 0.2 + \hat\sigma\f$ (clamped to [0.2, 1.4]),
   \f$r = (2 + 10\hat\sigma)\,d\f$ (clamped to \f$[3d, 4d]\f$),
-  \f$v_{iter} = 2\f$, at most 100 iterations; and a
-  stopping rule that needs no ground truth ends the iterations once the RMS
-  vertex displacement from the input reaches 0.95 times the noise level, or
-  once the filtered normals change by less than 0.005 degree on average from
-  one iteration to the next (neither test before 20 iterations, unless the
-  noise level is below 0.02: a noise-free mesh stops after one iteration).
-  Then a shape test: if fewer than half of the interior edges of the result
-  have a dihedral angle under 1 degree, the surface is not piecewise flat
-  (organic, curved or irregular), and the input is denoised again with the
-  smooth-surface schedule, \f$\sigma_s = \sigma_r = 1.4\f$, \f$r = 2d\f$,
-  with the same stopping rule but tested from the first iteration (the
-  progress callback then counts again from 1). If at least 90% of them are
-  that flat, the surface is made of large flat faces, and the input is
-  denoised again with the flat-faced schedule: the first schedule's
-  \f$\sigma\f$, \f$r = 8d\f$, up to 150 iterations, stopped earlier only if
-  the filtered normals change by less than 0.0002 degree on average (about
-  14 times the first schedule's time; skipped if its paths would hold over
-  \f$2^{28}\f$ nodes, about a million faces). The test is made only when
-  \f$\sigma_s\f$, \f$\sigma_r\f$, the radius and `number_of_iterations`
-  are all left to the automatic mode and the noise level is at least 0.02.
-  The values used are returned. Explicit parameters always win; a given
-  `number_of_iterations` is run exactly (the stopping rule is then off
-  unless `stop_when_converged(true)`). These constants were fitted on the
-  package's benchmark (`auto_parameters_benchmark`, 13 noisy inputs); see the
-  user manual for how close to a per-mesh grid search they come.
+  \f$v_{iter} = 2\f$, at most 100 iterations; and unless
+  `number_of_iterations` is given, a stopping rule ends the iterations once
+  the RMS vertex displacement from the input reaches 0.95 times the noise
+  level, or once the filtered normals change by less than 0.005 degree on
+  average from one iteration to the next (neither test before 20 iterations,
+  unless the noise level is below 0.02: a noise-free mesh stops after one
+  iteration). Explicit parameters always win; a given `number_of_iterations`
+  is run exactly (the stopping rule is then off unless
+  `stop_when_converged(true)`).
 
   <b>Fixed mode</b> (`automatic_parameters(false)`): the values of the
   paper's figure 2, `number_of_iterations` 30, `vertex_iterations` 2,
@@ -280,8 +389,9 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{automatic_parameters}
-      \cgalParamDescription{if `true`, the parameters not given are derived from the estimated noise level and the
-                            stopping rule is on (see above); if `false`, the fixed defaults of the paper's figure 2}
+      \cgalParamDescription{if `true`, the automatic selection chooses the setting and the number of iterations, or,
+                            with some of them given, the others are derived from the noise level and the stopping
+                            rule is on (see above); if `false`, the fixed defaults of the paper's figure 2}
       \cgalParamType{bool}
       \cgalParamDefault{`true`}
     \cgalParamNEnd
@@ -304,7 +414,8 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
     \cgalParamNEnd
     \cgalParamNBegin{progress_callback}
       \cgalParamDescription{called after each iteration with the number of iterations done and the largest number
-                            (the stopping rule may end the run earlier)}
+                            (the stopping rule may end the run earlier); during the automatic selection, after each
+                            candidate with the number of candidates run and their number}
       \cgalParamType{a callable with signature `void(std::size_t, std::size_t)`}
       \cgalParamDefault{none}
     \cgalParamNEnd
@@ -416,16 +527,12 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
   };
   // One denoising from the input with the defaults `choose(mesh)` for the
   // parameters not given, stopped as `stop` says; the report describes it.
-  // Returns the vertices and the last filtered normals in input order, and
-  // with `measure_shape`, if there is noise to remove, the flat-edge fraction
-  // of the result (Automatic_rules).
+  // Returns the vertices and the last filtered normals in input order.
   struct Run
   {
     std::vector<D::Vec3> points, normals;
-    double flat_fraction = -1.;
-    std::size_t path_nodes = 0;
   };
-  auto run = [&](const auto& choose, bool measure_shape, const Schedule_stop& stop) {
+  auto run = [&](const auto& choose, const Schedule_stop& stop) {
     D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname, choose);
     const unsigned int iterations = choose_parameter(
         get_parameter(np, internal_np::number_of_iterations),
@@ -486,54 +593,30 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
     if(stop_rule)
       report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
     Run r;
-    r.path_nodes = s.paths.face.size();
-    if(measure_shape && report.noise_level >= D::Automatic_rules::min_noise)
-    {
-      D::compute_face_data<ConcurrencyTag>(s.mesh, points, current);
-      r.flat_fraction = D::flat_edge_fraction<ConcurrencyTag>(s.mesh, current.normals, D::Automatic_rules::flat_angle);
-    }
     r.points = s.mesh.vertex_values_in_input_order(points);
     if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
       r.normals = s.mesh.in_input_order(filtered);
     return r;
   };
 
-  // The shape test of the automatic mode (Automatic_rules): only when the
-  // kernel, the radius and the number of iterations are all left to it (the
-  // smooth-surface schedule relies on the stopping rule), and there is noise
-  // to remove.
+  // The automatic selection (automatic_selection.h): only when the kernel,
+  // the radius, the number of iterations and the noise level are all left
+  // to the automatic mode.
   constexpr bool kernel_or_radius_given =
       !is_default_parameter<NamedParameters, internal_np::sigma_spatial_t>::value ||
       !is_default_parameter<NamedParameters, internal_np::sigma_range_t>::value ||
       !is_default_parameter<NamedParameters, internal_np::neighbor_radius_t>::value ||
       !is_default_parameter<NamedParameters, internal_np::relative_neighbor_radius_t>::value;
-  const bool shape_test = report.automatic_parameters && stop_rule && !kernel_or_radius_given;
-  Run result = run(choose_defaults, shape_test, Schedule_stop{D::Automatic_rules::min_iterations});
-  if(shape_test)
+  if(report.automatic_parameters && stop_rule && !iterations_given && !kernel_or_radius_given && given_noise < 0.)
   {
-    report.flat_edge_fraction = result.flat_fraction; // -1 if not measured
-    if(result.flat_fraction >= 0. && result.flat_fraction < D::Automatic_rules::min_flat_fraction)
-    {
-      report.smooth_surface = true;
-      report.discarded_iterations = report.iterations;
-      D::Setup_defaults smooth;
-      smooth.sigma_spatial = smooth.sigma_range = D::Automatic_rules::smooth_sigma;
-      smooth.relative_radius = D::Automatic_rules::smooth_relative_radius;
-      result = run([&smooth](const D::Flat_mesh&) { return smooth; }, false,
-                   Schedule_stop{D::Automatic_rules::smooth_min_iterations});
-    }
-    else if(result.flat_fraction >= D::Automatic_rules::flat_faced_fraction &&
-            D::flat_faced_affordable(result.path_nodes, choice.kernel.relative_radius))
-    {
-      report.flat_faced = true;
-      report.discarded_iterations = report.iterations;
-      D::Setup_defaults flat = choice.kernel;
-      flat.relative_radius = D::Automatic_rules::flat_faced_relative_radius;
-      const Schedule_stop flat_stop{D::Automatic_rules::min_iterations, D::Automatic_rules::flat_faced_max_iterations,
-                                    false, D::Automatic_rules::flat_faced_change_tolerance};
-      result = run([&flat](const D::Flat_mesh&) { return flat; }, false, flat_stop);
-    }
+    const D::Candidate_run result =
+        D::select_automatically<ConcurrencyTag>(tmesh, np, maps, vertex_iterations, report, fname);
+    maps.write_points(tmesh, result.points);
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
+      maps.write_face_vectors(tmesh, result.normals, get_parameter(np, internal_np::face_normal));
+    return report;
   }
+  const Run result = run(choose_defaults, Schedule_stop{D::Automatic_rules::min_iterations});
   maps.write_points(tmesh, result.points);
   if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
     maps.write_face_vectors(tmesh, result.normals, get_parameter(np, internal_np::face_normal));

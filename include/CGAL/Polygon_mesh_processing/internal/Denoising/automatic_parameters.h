@@ -1,8 +1,11 @@
 // Copyright (c) 2026 The intrinsic denoising package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The automatic mode of intrinsic_denoising(): parameters derived from the
-// estimated noise level, and the stopping rule that needs no ground truth.
+// The rules of intrinsic_denoising() when some of the filter's parameters are
+// given and the others left to it (with everything left to it, the automatic
+// selection of automatic_selection.h runs instead): the missing ones derived
+// from the estimated noise level, and the stopping rule that needs no ground
+// truth.
 
 #ifndef CGAL_PMP_INTERNAL_DENOISING_AUTOMATIC_PARAMETERS_H
 #define CGAL_PMP_INTERNAL_DENOISING_AUTOMATIC_PARAMETERS_H
@@ -71,94 +74,7 @@ struct Automatic_rules
   // (1.318 -> 1.368 degrees), and 30 cost it more (1.454)
   static constexpr unsigned int min_iterations = 20;
   static constexpr double min_noise = 0.02;
-  // The shape test, made on the result of the schedule above (which keeps
-  // sharp edges): a piecewise flat (CAD-like) result has most of its interior
-  // edges at a dihedral angle under flat_angle degrees (0.78 to 0.97 of them
-  // on the benchmark's CAD inputs); a smooth curved (organic) or irregular
-  // surface few (0.16 to 0.30). Below min_flat_fraction the mesh is denoised
-  // again from its input with the smooth-surface schedule: a wide kernel on a
-  // small radius (almost a Gaussian smoothing of the normals), with the same
-  // stopping rule.
-  static constexpr double flat_angle = 1.;
-  static constexpr double min_flat_fraction = 0.5;
-  static constexpr double smooth_sigma = 1.4;
-  static constexpr double smooth_relative_radius = 2.;
-  // The smooth-surface schedule's stopping rule is tested from the first
-  // iteration: its wide kernel takes the noise out in a few (the grid's best
-  // on those inputs: 2 to 19), and on a coarse curved mesh whose curvature
-  // the estimate takes for noise (CGAL's elephant, cow, dino, armadillo: 0.08
-  // to 0.12 without noise) a floor of 10 iterations flattened details.
-  static constexpr unsigned int smooth_min_iterations = 1;
-  // At or above flat_faced_fraction the surface is made of large flat faces
-  // (0.97 on the benchmark's cube and prism; 0.70 to 0.81 on the CAD meshes
-  // with curved parts: fandisk, anchor_dense, fandisk_large). The input is
-  // then denoised again with the first schedule's sigma on a radius of
-  // flat_faced_relative_radius d, for flat_faced_max_iterations, stopped
-  // earlier only if the normals stop changing (flat_faced_change_tolerance,
-  // tested from min_iterations; the displacement test is off). On such faces
-  // more smoothing only flattens them further: the grid's best is at r 8d
-  // and 130-150 iterations (cube 0.188, prism 0.082 degrees, against 0.563
-  // and 0.287 with the first schedule), and E_n still falls at 150. With the
-  // first schedule's tolerance (0.005) the runs stopped after 20-47
-  // iterations at 0.39 and 0.22 degrees, with 0.001 at 0.22 and 0.12. On
-  // fandisk the same settings would double the error. The price: about 14
-  // times the first schedule's time on those meshes (cube 0.10 -> 1.4 s).
-  static constexpr double flat_faced_fraction = 0.9;
-  static constexpr double flat_faced_relative_radius = 8.;
-  static constexpr unsigned int flat_faced_max_iterations = 150;
-  static constexpr double flat_faced_change_tolerance = 0.0002;
-  // The flat-faced radius, two to 2.7 times the first schedule's, holds
-  // about four to seven times its path nodes. Above this many (expected)
-  // nodes the flat-faced schedule is skipped and the first schedule kept: its
-  // node list alone would take over 1 GiB, and its 150 iterations minutes
-  // (about a million faces at r 8d).
-  static constexpr std::size_t flat_faced_max_path_nodes = std::size_t(1) << 28;
 };
-
-// Whether the flat-faced schedule stays within Automatic_rules'
-// flat_faced_max_path_nodes, from the path nodes of the first schedule and
-// its relative radius (the nodes grow as the square of the radius).
-inline bool flat_faced_affordable(std::size_t first_schedule_nodes, double first_relative_radius)
-{
-  if(!(first_relative_radius > 0.))
-    return false;
-  const double ratio = Automatic_rules::flat_faced_relative_radius / first_relative_radius;
-  return double(first_schedule_nodes) * ratio * ratio <= double(Automatic_rules::flat_faced_max_path_nodes);
-}
-
-// The fraction of the interior edges of m (pairs of faces sharing two
-// vertices, both with a non-zero normal) whose faces' normals differ by less
-// than `angle` degrees; -1 if there is no such edge. Parallel over faces;
-// the counts are exact, so the result does not depend on the tag.
-template <typename ConcurrencyTag>
-double flat_edge_fraction(const Flat_mesh& m, const std::vector<Vec3>& normals, double angle)
-{
-  const std::size_t nf = m.number_of_faces();
-  const double cos_angle = std::cos(angle * 3.14159265358979323846 / 180.);
-  std::vector<std::uint32_t> flat(nf, 0), total(nf, 0);
-  for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
-    for(std::size_t f = b; f < e; ++f)
-    {
-      const Vec3& n = normals[f];
-      if(squared_norm(n) == 0.)
-        continue;
-      for_each_edge_adjacent_face_after(m, f, [&](std::uint32_t g) {
-        if(squared_norm(normals[g]) == 0.)
-          return;
-        ++total[f];
-        // unit normals: the angle is under `angle` iff the cosine is above
-        flat[f] += dot(n, normals[g]) > cos_angle ? 1u : 0u;
-      });
-    }
-  });
-  std::size_t flat_sum = 0, total_sum = 0;
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    flat_sum += flat[f];
-    total_sum += total[f];
-  }
-  return total_sum == 0 ? -1. : double(flat_sum) / double(total_sum);
-}
 
 // The default of progress_callback: does nothing.
 struct No_progress

@@ -1,0 +1,666 @@
+// The development corpus: every triangle mesh of CGAL's data set
+// (meshes/*.off) with 1,000 to 60,000 faces, each with several kinds of
+// seeded noise, and per input the automatic mode of intrinsic_denoising()
+// against the fixed setting, the classic methods at their defaults and an
+// oracle (the best E_n of a grid of the intrinsic filter's parameters).
+//
+// Usage:
+//   corpus_benchmark --list                        the inputs, one a line
+//   corpus_benchmark --build-reference FILE [--trace TRACE]
+//       computes, for every input not yet in FILE, what depends only on the
+//       input (noisy E_n and E_v, the oracle grid's best, the classic methods'
+//       E_n) and appends it to FILE (tab-separated; resumable). With --trace,
+//       every grid setting's E_n and residual statistics per iteration go to
+//       TRACE. About an hour on 2 cores.
+//   corpus_benchmark [--reference FILE] [--results OUT]
+//       the everyday run: automatic mode and fixed setting on every input,
+//       compared with FILE's figures; prints one row an input and the
+//       distributions; writes the rows to OUT (tab-separated).
+//   --stride N --offset M  only inputs M, M+N, M+2N, ... (quick looks)
+//   --only TEXT            only inputs whose name contains TEXT
+//   corpus_benchmark --candidates
+//       per input and candidate of the automatic selection: E_n and
+//       statistics of the residual at its stop (tab-separated, for study)
+//
+// Inputs (the rule, applied to the meshes sorted by file name, index i):
+// Gaussian noise along vertex normals at sigma_E L[i mod 5] and
+// L[(i + 2) mod 5], L = {0.1, 0.2, 0.3, 0.5, 0.7}; simulated depth-scan noise
+// (add_depth_scan_noise) at 0.2 (odd i) or 0.4 (even i); and, for even i,
+// impulsive noise (10% of the vertices, sigma_E 1.0). Seed 1 everywhere. A
+// mesh whose longest edge is over 50 times its shortest is "irregular" and
+// reported as a separate group.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Polygon_mesh_processing/add_noise.h>
+#include <CGAL/Polygon_mesh_processing/bilateral_mesh_denoising.h>
+#include <CGAL/Polygon_mesh_processing/bilateral_normal_denoising.h>
+#include <CGAL/Polygon_mesh_processing/denoising_error.h>
+#include <CGAL/Polygon_mesh_processing/fast_feature_preserving_denoising.h>
+#include <CGAL/Polygon_mesh_processing/guided_normal_denoising.h>
+#include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
+#include <CGAL/Polygon_mesh_processing/l0_denoising.h>
+#include <CGAL/Polygon_mesh_processing/non_iterative_denoising.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/residual_statistics.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace D = CGAL::Polygon_mesh_processing::internal::Denoising;
+typedef CGAL::Parallel_if_available_tag Tag;
+
+namespace {
+
+constexpr std::size_t min_faces = 1000, max_faces = 60000;
+constexpr double irregular_edge_ratio = 50.;
+constexpr unsigned int seed = 1;
+
+struct Corpus_mesh
+{
+  std::string file;
+  std::size_t faces = 0;
+  bool irregular = false;
+};
+
+struct Noise
+{
+  std::string label; // e.g. "gauss0.3", "impulse10%1.0", "depth0.4"
+  enum Kind { GAUSSIAN, IMPULSIVE, DEPTH } kind;
+  double sigma;
+};
+
+struct Input
+{
+  Corpus_mesh mesh;
+  Noise noise;
+  std::string key() const { return mesh.file + "\t" + noise.label + "\t" + std::to_string(seed); }
+  std::string name() const { return mesh.file + " " + noise.label; }
+};
+
+std::string meshes_dir() { return CGAL::data_file_path("meshes"); }
+
+bool load(const std::string& file, Mesh& m)
+{
+  m.clear();
+  return CGAL::IO::read_polygon_mesh(meshes_dir() + "/" + file, m) && !m.is_empty() && CGAL::is_triangle_mesh(m);
+}
+
+double edge_length_ratio(const Mesh& m)
+{
+  double lo = 1e300, hi = 0.;
+  for(auto e : edges(m))
+  {
+    const double l = std::sqrt(CGAL::squared_distance(m.point(source(e, m)), m.point(target(e, m))));
+    if(l > 0.)
+      lo = std::min(lo, l);
+    hi = std::max(hi, l);
+  }
+  return hi > 0. && lo < 1e300 ? hi / lo : 0.;
+}
+
+std::vector<Corpus_mesh> corpus_meshes()
+{
+  std::vector<std::string> files;
+  for(const auto& entry : std::filesystem::directory_iterator(meshes_dir()))
+    if(entry.path().extension() == ".off")
+      files.push_back(entry.path().filename().string());
+  std::sort(files.begin(), files.end());
+  std::vector<Corpus_mesh> out;
+  for(const std::string& f : files)
+  {
+    Mesh m;
+    if(!load(f, m))
+      continue;
+    const std::size_t nf = num_faces(m);
+    if(nf < min_faces || nf > max_faces)
+      continue;
+    out.push_back({f, nf, edge_length_ratio(m) > irregular_edge_ratio});
+  }
+  return out;
+}
+
+std::vector<Input> corpus_inputs()
+{
+  const double levels[5] = {0.1, 0.2, 0.3, 0.5, 0.7};
+  std::vector<Input> inputs;
+  const std::vector<Corpus_mesh> meshes = corpus_meshes();
+  for(std::size_t i = 0; i < meshes.size(); ++i)
+  {
+    char buf[64];
+    for(double level : {levels[i % 5], levels[(i + 2) % 5]})
+    {
+      std::snprintf(buf, sizeof buf, "gauss%.1f", level);
+      inputs.push_back({meshes[i], {buf, Noise::GAUSSIAN, level}});
+    }
+    const double depth = i % 2 == 0 ? 0.4 : 0.2;
+    std::snprintf(buf, sizeof buf, "depth%.1f", depth);
+    inputs.push_back({meshes[i], {buf, Noise::DEPTH, depth}});
+    if(i % 2 == 0)
+      inputs.push_back({meshes[i], {"impulse10%1.0", Noise::IMPULSIVE, 1.0}});
+  }
+  return inputs;
+}
+
+void make_noisy(const Input& in, Mesh& reference, Mesh& noisy)
+{
+  if(!load(in.mesh.file, reference))
+  {
+    std::cerr << "cannot read " << in.mesh.file << "\n";
+    std::exit(1);
+  }
+  noisy = reference;
+  const auto np = CGAL::parameters::random_seed(seed);
+  switch(in.noise.kind)
+  {
+  case Noise::GAUSSIAN: PMP::add_gaussian_noise(noisy, in.noise.sigma, np); break;
+  case Noise::IMPULSIVE: PMP::add_impulsive_noise(noisy, 0.1, in.noise.sigma, np); break;
+  case Noise::DEPTH: PMP::add_depth_scan_noise(noisy, in.noise.sigma, np); break;
+  }
+}
+
+const char* const classic_names[] = {"FDC03", "JDD03", "SRML07", "ZFAT11", "HS13", "ZDZ15"};
+constexpr std::size_t n_classic = 6;
+
+std::vector<double> classic_errors(const Mesh& noisy, const Mesh& reference)
+{
+  const std::vector<std::function<void(Mesh&)>> methods = {
+      [](Mesh& m) { PMP::bilateral_mesh_denoising<Tag>(m); },
+      [](Mesh& m) { PMP::non_iterative_denoising<Tag>(m); },
+      [](Mesh& m) { PMP::fast_feature_preserving_denoising<Tag>(m); },
+      [](Mesh& m) { PMP::bilateral_normal_denoising<Tag>(m); },
+      [](Mesh& m) { PMP::l0_denoising<Tag>(m); },
+      [](Mesh& m) { PMP::guided_normal_denoising<Tag>(m); }};
+  std::vector<double> errors;
+  for(const auto& method : methods)
+  {
+    Mesh m = noisy;
+    method(m);
+    errors.push_back(PMP::face_normal_error(m, reference));
+  }
+  return errors;
+}
+
+// What depends only on the input.
+struct Reference
+{
+  std::size_t faces = 0;
+  double noisy_En = 0., noisy_Ev = 0.;
+  double oracle_En = 1e30, oracle_sigma = 0., oracle_radius = 0.;
+  unsigned int oracle_k = 0;
+  std::vector<double> classic;
+};
+
+// The oracle grid: sigma_s = sigma_r in {0.2, 0.3, 0.5, 0.8, 1.4}, r in
+// {2, 3, 4, 6} d, v = 2, k = 1..60 (E_n read after every iteration), square
+// pattern, fold safeguard on: the intrinsic filter's own loop.
+void oracle(const Mesh& noisy, const Mesh& reference, Reference& out, std::FILE* trace, const std::string& name)
+{
+  const double sigmas[] = {0.2, 0.3, 0.5, 0.8, 1.4};
+  const double radii[] = {2., 3., 4., 6.};
+  constexpr unsigned int kmax = 60, v_iter = 2;
+  const D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters> maps(noisy, CGAL::parameters::default_values());
+  // the reference's own maps: a Surface_mesh's point map belongs to one mesh
+  const D::Flat_mesh ref =
+      D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters>(reference, CGAL::parameters::default_values())
+          .flat(reference, "oracle");
+  for(double r : radii)
+  {
+    const auto np = CGAL::parameters::relative_neighbor_radius(r);
+    D::Intrinsic_setup base = D::make_intrinsic_setup<Tag>(noisy, np, maps, "oracle");
+    const double L = D::mean_edge_length(base.mesh);
+    const D::Csr adjacency = D::vertex_adjacency(base.mesh);
+    D::Face_data ref_fd;
+    D::compute_face_data<CGAL::Sequential_tag>(base.mesh, ref.points, ref_fd);
+    for(double sigma : sigmas)
+    {
+      D::Intrinsic_kernel kernel = base.kernel;
+      kernel.sigma_spatial = kernel.sigma_range = sigma;
+      std::vector<D::Vec3> points = base.mesh.points;
+      const std::vector<D::Vec3> input_points = points;
+      D::Face_data current = base.input_faces;
+      std::vector<D::Vec3> filtered, centroids, next;
+      const std::vector<char> fixed(points.size(), 0);
+      D::Fold_safeguard guard;
+      guard.enabled = true;
+      guard.reference = &base.input_faces.normals;
+      for(unsigned int k = 1; k <= kmax; ++k)
+      {
+        if(k > 1)
+          D::compute_face_data<Tag>(base.mesh, points, current);
+        D::intrinsic_filter_pass<Tag>(base.paths, current.normals, current.areas, kernel, filtered);
+        D::update_vertices<Tag>(base.mesh, points, filtered, fixed, v_iter, centroids, next, &guard);
+        D::Face_data fd;
+        D::compute_face_data<Tag>(base.mesh, points, fd);
+        const double En = D::mean_angle_degrees(fd.normals, ref_fd.normals);
+        if(En < out.oracle_En)
+        {
+          out.oracle_En = En;
+          out.oracle_sigma = sigma;
+          out.oracle_radius = r;
+          out.oracle_k = k;
+        }
+        if(trace)
+        {
+          const D::Residual_statistics st = D::residual_statistics(adjacency, points, input_points, L);
+          std::fprintf(trace, "%s\t%.1f\t%.1f\t%u\t%.4f\t%.5f\t%.5f\n", name.c_str(), sigma, r, k, En, st.rms,
+                       st.correlation);
+        }
+      }
+    }
+  }
+}
+
+// --candidates: for every candidate of the automatic selection, run on the
+// input with its stopping rule, E_n and statistics of its residual at the
+// stop, one tab-separated line each (for studying the selection).
+void candidate_statistics(const Input& in, std::FILE* out)
+{
+  Mesh reference, noisy;
+  make_noisy(in, reference, noisy);
+  const auto np = CGAL::parameters::default_values();
+  const D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters> maps(noisy, np);
+  const D::Flat_mesh ref =
+      D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters>(reference, np).flat(reference, "candidates");
+  const D::Flat_mesh input = maps.flat(noisy, "candidates");
+  const std::vector<char> constrained(num_vertices(noisy), 0);
+  D::Face_data ref_fd, in_fd;
+  D::compute_face_data<CGAL::Sequential_tag>(ref, ref.points, ref_fd);
+  const D::Csr adjacency = D::vertex_adjacency(input);
+  const double L = D::mean_edge_length(input);
+  std::vector<std::vector<D::Vec3>> results;
+  std::vector<D::Candidate_run> runs;
+  D::Automatic_selection<Tag> selection(2, true, false);
+  for(std::size_t c = 0; c < D::Selection_rules::number_of_candidates; ++c)
+  {
+    const auto& k = D::Selection_rules::candidates[c];
+    if(c == 0 || k.relative_radius != D::Selection_rules::candidates[c - 1].relative_radius)
+    {
+      D::Setup_defaults d;
+      d.sigma_spatial = d.sigma_range = k.sigma;
+      d.relative_radius = k.relative_radius;
+      selection.setup_paths(
+          D::make_intrinsic_setup<Tag>(noisy, np, maps, "candidates", [&d](const D::Flat_mesh&) { return d; }),
+          constrained);
+    }
+    selection.run(k.sigma);
+  }
+  selection.choose();
+  for(const D::Candidate_run& r : selection.runs())
+  {
+    // the result's face normals against the reference (input face order)
+    D::Face_data fd;
+    D::compute_face_data<CGAL::Sequential_tag>(input, r.points, fd);
+    const double En = D::mean_angle_degrees(fd.normals, ref_fd.normals);
+    // residual along the result's vertex normals
+    D::Flat_mesh result = input;
+    result.points = r.points;
+    const std::vector<D::Vec3> vn = D::area_weighted_vertex_normals(result);
+    std::vector<double> s(input.points.size(), 0.), mag(input.points.size(), 0.);
+    double s2 = 0., s4 = 0.;
+    std::size_t n = 0;
+    for(std::size_t v = 0; v < s.size(); ++v)
+    {
+      const D::Vec3 rv = input.points[v] - r.points[v];
+      mag[v] = D::norm(rv) / L;
+      if(adjacency.begin(v) == adjacency.end(v))
+        continue;
+      s[v] = D::dot(rv, vn[v]) / L;
+      s2 += s[v] * s[v];
+      s4 += s[v] * s[v] * s[v] * s[v];
+      ++n;
+    }
+    const double kurtosis = s2 > 0. ? double(n) * s4 / (s2 * s2) : 0.;
+    const double rms = std::sqrt(s2 / double(std::max<std::size_t>(n, 1)));
+    // correlation among the large residuals (both above twice the RMS)
+    double tail_cross = 0., tail_energy = 0.;
+    for(std::size_t v = 0; v < s.size(); ++v)
+      for(std::uint32_t q = adjacency.begin(v); q < adjacency.end(v); ++q)
+      {
+        const std::uint32_t u = adjacency.items[q];
+        if(u <= v || std::abs(s[v]) < 2. * rms || std::abs(s[u]) < 2. * rms)
+          continue;
+        tail_cross += s[u] * s[v];
+        tail_energy += 0.5 * (s[u] * s[u] + s[v] * s[v]);
+      }
+    // share of the residual energy in the 5% largest
+    std::vector<double> e2 = mag;
+    for(double& x : e2)
+      x *= x;
+    std::sort(e2.begin(), e2.end(), std::greater<double>());
+    double top = 0., all = 0.;
+    for(std::size_t i = 0; i < e2.size(); ++i)
+    {
+      all += e2[i];
+      if(i < e2.size() / 20)
+        top += e2[i];
+    }
+    // flat-edge share of the result (1 degree)
+    std::size_t flat = 0, edges_n = 0;
+    for(std::size_t f = 0; f < input.number_of_faces(); ++f)
+      D::for_each_edge_adjacent_face_after(input, f, [&](std::uint32_t g) {
+        ++edges_n;
+        flat += D::dot(fd.normals[f], fd.normals[g]) > std::cos(3.14159265358979 / 180.) ? 1 : 0;
+      });
+    // the result kept only at the vertices whose residual is far above the
+    // median residual (the input elsewhere): E_n for 2, 3 and 4 medians
+    std::vector<double> sorted_mag = mag;
+    std::nth_element(sorted_mag.begin(), sorted_mag.begin() + sorted_mag.size() / 2, sorted_mag.end());
+    const double median = sorted_mag[sorted_mag.size() / 2];
+    double blended[3], rough_blend = 0., rough_result = 0.;
+    std::size_t beyond4 = 0;
+    for(double x : mag)
+      beyond4 += x > 4. * median ? 1 : 0;
+    for(int b = 0; b < 3; ++b)
+    {
+      std::vector<D::Vec3> pts = input.points;
+      for(std::size_t v = 0; v < pts.size(); ++v)
+        if(mag[v] > double(b + 2) * median)
+          pts[v] = r.points[v];
+      D::Face_data bfd;
+      D::compute_face_data<CGAL::Sequential_tag>(input, pts, bfd);
+      blended[b] = D::mean_angle_degrees(bfd.normals, ref_fd.normals);
+      if(b == 2)
+      {
+        // mean dihedral angle (degrees) of the blend and of the result
+        auto roughness = [&](const D::Face_data& x) {
+          double sum = 0.;
+          std::size_t count = 0;
+          for(std::size_t f = 0; f < input.number_of_faces(); ++f)
+            D::for_each_edge_adjacent_face_after(input, f, [&](std::uint32_t g) {
+              sum += std::acos(std::max(-1., std::min(1., D::dot(x.normals[f], x.normals[g]))));
+              ++count;
+            });
+          return count ? sum / double(count) * 180. / 3.14159265358979 : 0.;
+        };
+        rough_blend = roughness(bfd);
+        rough_result = roughness(fd);
+      }
+    }
+    const D::Residual_statistics st = r.iterations > 0 ? r.trajectory[r.iterations - 1] : D::Residual_statistics();
+    std::fprintf(out, "%s\t%.1f\t%.1f\t%u\t%d\t%.4f\t%.5f\t%.5f\t%.5f\t%.4f\t%.5f\t%.4f\t%.4f\t%.4f\t%.4f\t%.4f\t%.5f\t%.4f\t%.4f\n",
+                 in.name().c_str(), r.sigma, r.relative_radius, r.iterations, int(r.stopped_by_correlation), En, st.rms,
+                 st.correlation, r.score, kurtosis, tail_energy > 0. ? tail_cross / tail_energy : 0.,
+                 all > 0. ? top / all : 0., edges_n ? double(flat) / double(edges_n) : 0., blended[0], blended[1],
+                 blended[2], double(beyond4) / double(mag.size()), rough_blend, rough_result);
+  }
+  std::fflush(out);
+}
+
+std::map<std::string, Reference> read_reference(const std::string& file)
+{
+  std::map<std::string, Reference> refs;
+  std::ifstream in(file);
+  std::string line;
+  while(std::getline(in, line))
+  {
+    if(line.empty() || line[0] == '#')
+      continue;
+    std::istringstream ss(line);
+    std::string mesh, noise, s;
+    std::getline(ss, mesh, '\t');
+    std::getline(ss, noise, '\t');
+    std::getline(ss, s, '\t');
+    Reference r;
+    ss >> r.faces >> r.noisy_En >> r.noisy_Ev >> r.oracle_En >> r.oracle_sigma >> r.oracle_radius >> r.oracle_k;
+    r.classic.resize(n_classic);
+    for(double& c : r.classic)
+      ss >> c;
+    if(ss)
+      refs[mesh + "\t" + noise + "\t" + s] = r;
+  }
+  return refs;
+}
+
+double quantile(std::vector<double> v, double q)
+{
+  if(v.empty())
+    return 0.;
+  std::sort(v.begin(), v.end());
+  const std::size_t k = std::min(v.size() - 1, std::size_t(std::ceil(q * double(v.size()))) - (q > 0. ? 1 : 0));
+  return v[k];
+}
+
+struct Row
+{
+  Input in;
+  Reference ref;
+  double auto_En = 0., auto_Ev = 0., fixed_En = 0., fixed_Ev = 0., auto_s = 0., fixed_s = 0.;
+  std::string chosen;
+};
+
+void summary(const std::vector<Row>& rows, const char* group)
+{
+  if(rows.empty())
+    return;
+  std::vector<double> vs_oracle, vs_fixed, vs_classic, time_ratio;
+  std::size_t worse_En = 0, worse_Ev = 0, within10 = 0, within25 = 0, fixed_ok = 0, fixed_5 = 0, classic_ok = 0,
+              depth = 0, depth_ok = 0;
+  for(const Row& r : rows)
+  {
+    const double best_classic = *std::min_element(r.ref.classic.begin(), r.ref.classic.end());
+    vs_oracle.push_back(r.auto_En / r.ref.oracle_En);
+    vs_fixed.push_back(r.auto_En / r.fixed_En);
+    vs_classic.push_back(r.auto_En / best_classic);
+    time_ratio.push_back(r.auto_s / r.fixed_s);
+    worse_En += r.auto_En > r.ref.noisy_En;
+    worse_Ev += r.auto_Ev > r.ref.noisy_Ev;
+    within10 += r.auto_En <= 1.10 * r.ref.oracle_En;
+    within25 += r.auto_En <= 1.25 * r.ref.oracle_En;
+    fixed_ok += r.auto_En <= r.fixed_En;
+    fixed_5 += r.auto_En <= 1.05 * r.fixed_En;
+    classic_ok += r.auto_En <= best_classic;
+    if(r.in.noise.kind == Noise::DEPTH)
+    {
+      ++depth;
+      depth_ok += r.auto_En < r.fixed_En;
+    }
+  }
+  const double n = double(rows.size());
+  std::printf("\n### %s: %zu inputs\n\n", group, rows.size());
+  std::printf("| ratio | median | 90th percentile | worst |\n|---|---|---|---|\n");
+  auto line = [](const char* name, const std::vector<double>& v) {
+    std::printf("| %s | %.3f | %.3f | %.3f |\n", name, quantile(v, 0.5), quantile(v, 0.9), quantile(v, 1.));
+  };
+  line("auto / oracle (E_n)", vs_oracle);
+  line("auto / fixed (E_n)", vs_fixed);
+  line("auto / best classic default (E_n)", vs_classic);
+  line("auto / fixed (seconds)", time_ratio);
+  std::printf("\n- worse than the noisy input: E_n %zu, E_v %zu\n", worse_En, worse_Ev);
+  std::printf("- within 10%% of the oracle: %zu (%.0f%%); within 25%%: %zu (%.0f%%)\n", within10, 100. * within10 / n,
+              within25, 100. * within25 / n);
+  std::printf("- at least as good as the fixed setting: %zu (%.0f%%); within 5%% of it: %zu (%.0f%%)\n", fixed_ok,
+              100. * fixed_ok / n, fixed_5, 100. * fixed_5 / n);
+  std::printf("- no worse than the best classic default: %zu (%.0f%%)\n", classic_ok, 100. * classic_ok / n);
+  std::printf("- depth-scan inputs better than the fixed setting: %zu of %zu\n", depth_ok, depth);
+  std::vector<std::size_t> order(rows.size());
+  for(std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return vs_oracle[a] > vs_oracle[b]; });
+  std::printf("- worst five by auto / oracle:");
+  for(std::size_t i = 0; i < std::min<std::size_t>(5, order.size()); ++i)
+    std::printf(" %s (%.2f)%s", rows[order[i]].in.name().c_str(), vs_oracle[order[i]], i + 1 < 5 ? "," : "");
+  std::printf("\n");
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::string reference_file = std::string(CORPUS_DIR) + "/corpus_reference.tsv", build_file, trace_file,
+              results_file, only;
+  bool list = false, candidates = false;
+  std::size_t stride = 1, offset = 0;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string {
+      if(i + 1 >= argc)
+      {
+        std::cerr << a << " needs a value\n";
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if(a == "--list")
+      list = true;
+    else if(a == "--candidates")
+      candidates = true;
+    else if(a == "--build-reference")
+      build_file = next();
+    else if(a == "--trace")
+      trace_file = next();
+    else if(a == "--reference")
+      reference_file = next();
+    else if(a == "--results")
+      results_file = next();
+    else if(a == "--stride")
+      stride = std::max<std::size_t>(1, std::stoul(next()));
+    else if(a == "--offset")
+      offset = std::stoul(next());
+    else if(a == "--only")
+      only = next();
+    else
+    {
+      std::cerr << "usage: corpus_benchmark [--list] [--build-reference FILE [--trace FILE]] [--reference FILE] "
+                   "[--results FILE] [--stride N] [--offset M] [--only TEXT]\n";
+      return 2;
+    }
+  }
+  std::vector<Input> inputs;
+  {
+    const std::vector<Input> all = corpus_inputs();
+    for(std::size_t i = offset; i < all.size(); i += stride)
+      if(only.empty() || all[i].name().find(only) != std::string::npos)
+        inputs.push_back(all[i]);
+  }
+  if(list)
+  {
+    for(const Input& in : inputs)
+      std::printf("%s\t%zu faces\t%s\n", in.name().c_str(), in.mesh.faces, in.mesh.irregular ? "irregular" : "regular");
+    return 0;
+  }
+  if(candidates)
+  {
+    for(const Input& in : inputs)
+      candidate_statistics(in, stdout);
+    return 0;
+  }
+  if(!build_file.empty())
+  {
+    const std::map<std::string, Reference> done = read_reference(build_file);
+    std::FILE* out = std::fopen(build_file.c_str(), "a");
+    std::FILE* trace = trace_file.empty() ? nullptr : std::fopen(trace_file.c_str(), "a");
+    if(out == nullptr || (!trace_file.empty() && trace == nullptr))
+    {
+      std::cerr << "cannot write " << build_file << " or " << trace_file << "\n";
+      return 1;
+    }
+    for(const Input& in : inputs)
+    {
+      if(done.count(in.key()))
+        continue;
+      const auto t0 = std::chrono::steady_clock::now();
+      Mesh reference, noisy;
+      make_noisy(in, reference, noisy);
+      Reference r;
+      r.faces = num_faces(noisy);
+      r.noisy_En = PMP::face_normal_error(noisy, reference);
+      r.noisy_Ev = PMP::vertex_position_error(noisy, reference);
+      oracle(noisy, reference, r, trace, in.name());
+      r.classic = classic_errors(noisy, reference);
+      std::fprintf(out, "%s\t%zu\t%.6g\t%.6g\t%.6g\t%.2f\t%.1f\t%u", in.key().c_str(), r.faces, r.noisy_En, r.noisy_Ev,
+                   r.oracle_En, r.oracle_sigma, r.oracle_radius, r.oracle_k);
+      for(double c : r.classic)
+        std::fprintf(out, "\t%.6g", c);
+      std::fprintf(out, "\n");
+      std::fflush(out);
+      if(trace)
+        std::fflush(trace);
+      std::printf("%s: oracle %.3f (sigma %.1f, r %.0fd, k %u), %.1f s\n", in.name().c_str(), r.oracle_En,
+                  r.oracle_sigma, r.oracle_radius, r.oracle_k,
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      std::fflush(stdout);
+    }
+    std::fclose(out);
+    if(trace)
+      std::fclose(trace);
+    return 0;
+  }
+
+  const std::map<std::string, Reference> refs = read_reference(reference_file);
+  std::FILE* results = results_file.empty() ? nullptr : std::fopen(results_file.c_str(), "w");
+  if(results)
+    std::fprintf(results, "# mesh\tnoise\tseed\tgroup\tnoisy_En\toracle_En\tauto_En\tfixed_En\tbest_classic_En\t"
+                          "noisy_Ev\tauto_Ev\tfixed_Ev\tauto_s\tfixed_s\tchosen\n");
+  std::printf("| input | faces | noisy | oracle | auto | fixed | best classic | auto/oracle | auto s | fixed s | chosen |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<Row> regular, irregular;
+  std::size_t missing = 0;
+  for(const Input& in : inputs)
+  {
+    const auto it = refs.find(in.key());
+    if(it == refs.end())
+    {
+      ++missing;
+      continue;
+    }
+    Row row;
+    row.in = in;
+    row.ref = it->second;
+    Mesh reference, noisy;
+    make_noisy(in, reference, noisy);
+    Mesh a = noisy, f = noisy;
+    auto t0 = std::chrono::steady_clock::now();
+    const PMP::Intrinsic_denoising_report rep = PMP::intrinsic_denoising<Tag>(a);
+    row.auto_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    t0 = std::chrono::steady_clock::now();
+    PMP::intrinsic_denoising<Tag>(f, CGAL::parameters::automatic_parameters(false));
+    row.fixed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    row.auto_En = PMP::face_normal_error(a, reference);
+    row.auto_Ev = PMP::vertex_position_error(a, reference);
+    row.fixed_En = PMP::face_normal_error(f, reference);
+    row.fixed_Ev = PMP::vertex_position_error(f, reference);
+    char chosen[128];
+    std::snprintf(chosen, sizeof chosen, "sigma %.2f r %.1fd k %u noise %.3f", rep.sigma_spatial,
+                  rep.relative_neighbor_radius, rep.iterations, rep.noise_level);
+    row.chosen = chosen;
+    const double best_classic = *std::min_element(row.ref.classic.begin(), row.ref.classic.end());
+    std::printf("| %s%s | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.2f | %.2f | %.2f | %s |\n", in.name().c_str(),
+                in.mesh.irregular ? " (irregular)" : "", row.ref.faces, row.ref.noisy_En, row.ref.oracle_En,
+                row.auto_En, row.fixed_En, best_classic, row.auto_En / row.ref.oracle_En, row.auto_s, row.fixed_s,
+                chosen);
+    std::fflush(stdout);
+    if(results)
+      std::fprintf(results, "%s\t%s\t%.4f\t%.4f\t%.4f\t%.4f\t%.4f\t%.4g\t%.4g\t%.4g\t%.3f\t%.3f\t%s\n", in.key().c_str(),
+                   in.mesh.irregular ? "irregular" : "regular", row.ref.noisy_En, row.ref.oracle_En, row.auto_En,
+                   row.fixed_En, best_classic, row.ref.noisy_Ev, row.auto_Ev, row.fixed_Ev, row.auto_s, row.fixed_s,
+                   chosen);
+    (in.mesh.irregular ? irregular : regular).push_back(row);
+  }
+  if(results)
+    std::fclose(results);
+  if(missing > 0)
+    std::printf("\n%zu inputs have no reference figures (run --build-reference)\n", missing);
+  summary(regular, "regular meshes");
+  summary(irregular, "irregular meshes (longest edge over 50 times the shortest)");
+  return 0;
+}

@@ -1,0 +1,275 @@
+// Copyright (c) 2026 The intrinsic denoising package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The automatic mode of intrinsic_denoising() when no kernel width, radius or
+// number of iterations is given: a few candidate settings of the filter run
+// on the input, each stopped by the whiteness of its residual, and the one
+// whose residual is the most noise-like is kept. Every decision is read from
+// the residual between the input and the candidates' results
+// (residual_statistics.h), so it needs neither a noise estimate nor a
+// classification of the surface.
+
+#ifndef CGAL_PMP_INTERNAL_DENOISING_AUTOMATIC_SELECTION_H
+#define CGAL_PMP_INTERNAL_DENOISING_AUTOMATIC_SELECTION_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/face_data.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/residual_statistics.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Denoising {
+
+// The constants of the selection, measured on the development corpus
+// (benchmark/Polygon_mesh_processing/corpus_benchmark.cpp: 64 meshes of
+// CGAL's data set, Gaussian, impulsive and simulated depth-scan noise; see
+// the user manual for the distributions and for what was tried).
+struct Selection_rules
+{
+  struct Candidate
+  {
+    double sigma;           // sigma_s = sigma_r
+    double relative_radius; // in d
+  };
+  // From a kernel that keeps sharp edges to one that is almost a Gaussian
+  // smoothing of the normals, and a wide support for strong noise on
+  // piecewise flat surfaces; the two on 3d share their paths.
+  static constexpr Candidate candidates[] = {{0.5, 3.}, {0.8, 3.}, {0.8, 6.}, {1.4, 2.}};
+  static constexpr std::size_t number_of_candidates = sizeof(candidates) / sizeof(candidates[0]);
+  // A candidate stops before the first iteration whose residual correlation
+  // across edges reaches this value. Independent noise removed gives a
+  // correlation slightly below 0 (the residual is the noise less a low-pass
+  // of it); shape removed pushes it up. On the corpus the E_n-best iteration
+  // of a setting sits at a correlation of -0.03 to -0.07.
+  static constexpr double stop_correlation = -0.05;
+  // At most this many iterations per candidate. On the corpus, 60 instead
+  // would lower the best candidate's E_n little (90th percentile of its ratio
+  // to the oracle on the regular meshes 1.26 against 1.33, median the same)
+  // for half as much time again on the slowest inputs.
+  static constexpr unsigned int max_iterations = 40;
+  // The candidates are compared where each has removed the same amount: this
+  // fraction of the smallest residual RMS at which a candidate stopped. At
+  // equal RMS removed, a lower correlation means more noise and less shape.
+  static constexpr double comparison_fraction = 0.5;
+  // Piecewise flat evidence: the share of interior edges of a candidate's
+  // result whose faces differ by less than flat_angle degrees. Noise leaves
+  // no edge that flat, and a curved surface few (0.04 to 0.25 on the
+  // corpus's organic meshes, whatever the candidate); a CAD surface
+  // denoised by a kernel that keeps its edges many (0.33 to 0.93). When the
+  // largest share reaches min_flat_share, only the candidates within
+  // flat_share_margin of it are compared: on such a surface a wide kernel
+  // removes the noise fastest but rounds the edges, which the correlation
+  // sees too late.
+  static constexpr double flat_angle = 1.;
+  static constexpr double min_flat_share = 0.3;
+  static constexpr double flat_share_margin = 0.05;
+};
+
+// One candidate's run: its trajectory (residual statistics after each
+// iteration) and its result at the stop.
+struct Candidate_run
+{
+  double sigma = 0., relative_radius = 0.;
+  std::vector<Residual_statistics> trajectory;
+  unsigned int iterations = 0; // the iterations kept (trajectory[iterations - 1]; 0: the input)
+  bool stopped_by_correlation = false;
+  double flat_share = -1.; // of the result (Selection_rules::flat_angle); -1: no interior edge
+  double score = 0.;
+  std::vector<Vec3> points;  // in input vertex order
+  std::vector<Vec3> normals; // last filtered normals, in input face order (if asked)
+};
+
+// The correlation where the RMS first reaches `level` along `trajectory`
+// (linear between iterations); +infinity if it never does.
+inline double correlation_at_rms(const std::vector<Residual_statistics>& trajectory, double level)
+{
+  double previous_rms = 0., previous_corr = 0.;
+  for(std::size_t i = 0; i < trajectory.size(); ++i)
+  {
+    const Residual_statistics& s = trajectory[i];
+    if(s.rms >= level)
+    {
+      if(i == 0 || !(s.rms > previous_rms))
+        return s.correlation;
+      const double t = (level - previous_rms) / (s.rms - previous_rms);
+      return previous_corr + t * (s.correlation - previous_corr);
+    }
+    previous_rms = s.rms;
+    previous_corr = s.correlation;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+// The index of the candidate kept, and each candidate's score (set in runs):
+// among the candidates whose result is about as piecewise flat as the
+// flattest (if that one is flat enough to tell), or else among all, the
+// lowest residual correlation at the common comparison level.
+inline std::size_t choose_candidate(std::vector<Candidate_run>& runs)
+{
+  double smallest = std::numeric_limits<double>::infinity(), flattest = -1.;
+  for(const Candidate_run& r : runs)
+  {
+    if(r.iterations > 0)
+      smallest = std::min(smallest, r.trajectory[r.iterations - 1].rms);
+    flattest = std::max(flattest, r.flat_share);
+  }
+  const double level = Selection_rules::comparison_fraction * smallest;
+  const double min_share =
+      flattest >= Selection_rules::min_flat_share ? flattest - Selection_rules::flat_share_margin : -1.;
+  std::size_t best = runs.size();
+  for(std::size_t c = 0; c < runs.size(); ++c)
+  {
+    runs[c].score = correlation_at_rms(runs[c].trajectory, level);
+    if(runs[c].flat_share >= min_share && (best == runs.size() || runs[c].score < runs[best].score))
+      best = c;
+  }
+  return best == runs.size() ? 0 : best;
+}
+
+// The fraction of the interior edges of m (pairs of faces sharing two
+// vertices, both with a non-zero normal) whose faces' normals differ by less
+// than `angle` degrees; -1 if there is no such edge. Parallel over faces;
+// the counts are exact, so the result does not depend on the tag.
+template <typename ConcurrencyTag>
+double flat_edge_fraction(const Flat_mesh& m, const std::vector<Vec3>& normals, double angle)
+{
+  const std::size_t nf = m.number_of_faces();
+  const double cos_angle = std::cos(angle * 3.14159265358979323846 / 180.);
+  std::vector<std::uint32_t> flat(nf, 0), total(nf, 0);
+  for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t f = b; f < e; ++f)
+    {
+      const Vec3& n = normals[f];
+      if(squared_norm(n) == 0.)
+        continue;
+      for_each_edge_adjacent_face_after(m, f, [&](std::uint32_t g) {
+        if(squared_norm(normals[g]) == 0.)
+          return;
+        ++total[f];
+        // unit normals: the angle is under `angle` iff the cosine is above
+        flat[f] += dot(n, normals[g]) > cos_angle ? 1u : 0u;
+      });
+    }
+  });
+  std::size_t flat_sum = 0, total_sum = 0;
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    flat_sum += flat[f];
+    total_sum += total[f];
+  }
+  return total_sum == 0 ? -1. : double(flat_sum) / double(total_sum);
+}
+
+// Runs one candidate kernel on the paths of `s` (built on the input, whose
+// vertices have been renumbered for locality), from `input_points`, until an
+// iteration's residual correlation reaches Selection_rules::stop_correlation
+// (the result is then the iterate before it, which may be the input itself)
+// or `max_iterations`.
+template <typename ConcurrencyTag>
+Candidate_run run_candidate(const Intrinsic_setup& s, const Intrinsic_kernel& kernel, const Csr& adjacency,
+                            const std::vector<Vec3>& input_points, const std::vector<char>& fixed,
+                            unsigned int vertex_iterations, Fold_safeguard& guard, double unit, bool keep_normals,
+                            unsigned int max_iterations = Selection_rules::max_iterations)
+{
+  Candidate_run run;
+  run.sigma = kernel.sigma_spatial;
+  run.relative_radius = s.centroid_distance > 0. ? s.radius / s.centroid_distance : 0.;
+  std::vector<Vec3> points = input_points, kept = input_points;
+  Face_data current = s.input_faces;
+  std::vector<Vec3> filtered, kept_normals = s.input_faces.normals, centroids, next;
+  for(unsigned int it = 0; it < max_iterations; ++it)
+  {
+    if(it > 0)
+      compute_face_data<ConcurrencyTag>(s.mesh, points, current);
+    intrinsic_filter_pass<ConcurrencyTag>(s.paths, current.normals, current.areas, kernel, filtered);
+    update_vertices<ConcurrencyTag>(s.mesh, points, filtered, fixed, vertex_iterations, centroids, next, &guard);
+    run.trajectory.push_back(residual_statistics(adjacency, points, input_points, unit));
+    if(run.trajectory.back().correlation >= Selection_rules::stop_correlation)
+    {
+      run.stopped_by_correlation = true;
+      break;
+    }
+    run.iterations = it + 1;
+    kept = points;
+    if(keep_normals)
+      kept_normals.swap(filtered);
+  }
+  compute_face_data<ConcurrencyTag>(s.mesh, kept, current);
+  run.flat_share = flat_edge_fraction<ConcurrencyTag>(s.mesh, current.normals, Selection_rules::flat_angle);
+  run.points = s.mesh.vertex_values_in_input_order(kept);
+  if(keep_normals)
+    run.normals = s.mesh.in_input_order(kept_normals);
+  return run;
+}
+
+// The selection's steps, in the order intrinsic_denoising() calls them: for
+// each radius of the candidates, set up the paths once on the input
+// (`setup_paths`) and run the candidates on that radius (`run`); then
+// `choose`. The setups are built from the mesh with make_intrinsic_setup().
+template <typename ConcurrencyTag>
+class Automatic_selection
+{
+public:
+  Automatic_selection(unsigned int vertex_iterations, bool prevent_folds, bool keep_normals)
+      : vertex_iterations_(vertex_iterations), keep_normals_(keep_normals)
+  {
+    guard_.enabled = prevent_folds;
+  }
+
+  // Takes the setup of one radius (paths on the input mesh) and the
+  // constrained vertices in input order.
+  void setup_paths(Intrinsic_setup&& s, const std::vector<char>& constrained_in_input_order)
+  {
+    setup_ = std::move(s);
+    if(!setup_.mesh.input_face.empty())
+      reorder_vertices_for_locality(setup_.mesh);
+    fixed_ = setup_.mesh.vertex_values_from_input_order(constrained_in_input_order);
+    input_normals_ = setup_.input_faces.normals;
+    guard_.reference = guard_.enabled ? &input_normals_ : nullptr;
+    adjacency_ = vertex_adjacency(setup_.mesh);
+    mean_edge_ = mean_edge_length(setup_.mesh);
+  }
+
+  // Runs the candidate of kernel width `sigma` on the current paths.
+  void run(double sigma)
+  {
+    Intrinsic_kernel kernel = setup_.kernel;
+    kernel.sigma_spatial = kernel.sigma_range = sigma;
+    runs_.push_back(run_candidate<ConcurrencyTag>(setup_, kernel, adjacency_, setup_.mesh.points, fixed_,
+                                                  vertex_iterations_, guard_, mean_edge_, keep_normals_));
+  }
+
+  // Scores the candidates and returns the index of the one kept.
+  std::size_t choose() { return choose_candidate(runs_); }
+
+  std::vector<Candidate_run>& runs() { return runs_; }
+  double mean_edge_length_of_input() const { return mean_edge_; }
+  double centroid_distance() const { return setup_.centroid_distance; }
+
+private:
+  unsigned int vertex_iterations_;
+  bool keep_normals_;
+  Fold_safeguard guard_;
+  Intrinsic_setup setup_;
+  std::vector<char> fixed_;
+  std::vector<Vec3> input_normals_;
+  Csr adjacency_;
+  double mean_edge_ = 0.;
+  std::vector<Candidate_run> runs_;
+};
+
+} // namespace Denoising
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif
