@@ -34,6 +34,7 @@
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 #include <CGAL/Polygon_mesh_processing/l0_denoising.h>
 #include <CGAL/Polygon_mesh_processing/non_iterative_denoising.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/noise_estimate.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -201,27 +202,22 @@ static Grid_best grid_search(const Input& in, bool trace, const Grid& grid = sta
       kernel.sigma_spatial = kernel.sigma_range = sigma;
       std::vector<D::Vec3> points = base.mesh.points;
       const std::vector<D::Vec3> input_points = points;
-      D::Face_data current = base.input_faces;
-      std::vector<D::Vec3> filtered, previous, centroids, next;
+      std::vector<D::Vec3> previous;
       const std::vector<char> fixed(points.size(), 0);
       D::Fold_safeguard guard;
       guard.enabled = true;
       guard.reference = &base.input_faces.normals;
-      for(unsigned int k = 1; k <= kmax; ++k)
-      {
-        if(k > 1)
-          D::compute_face_data<Tag>(base.mesh, points, current);
-        D::intrinsic_filter_pass<Tag>(base.paths, current.normals, current.areas, kernel, filtered);
-        D::update_vertices<Tag>(base.mesh, points, filtered, fixed, v, centroids, next, &guard);
-        const double En = normal_error(base.mesh, points, ref_fd.normals);
+      D::iterate_filter<Tag>(base, kernel, base.input_faces, points, fixed, v, guard, kmax,
+                             [&](unsigned int k, const std::vector<D::Vec3>& p, std::vector<D::Vec3>& filtered) {
+        const double En = normal_error(base.mesh, p, ref_fd.normals);
         if(En < best.En)
           best = {En, sigma, r, k, v};
         if(trace)
         {
           double disp = 0., change = 0.;
-          for(std::size_t v = 0; v < points.size(); ++v)
-            disp += D::squared_norm(points[v] - input_points[v]);
-          disp = std::sqrt(disp / double(points.size())) / L;
+          for(std::size_t x = 0; x < p.size(); ++x)
+            disp += D::squared_norm(p[x] - input_points[x]);
+          disp = std::sqrt(disp / double(p.size())) / L;
           if(!previous.empty())
           {
             for(std::size_t f = 0; f < filtered.size(); ++f)
@@ -232,7 +228,8 @@ static Grid_best grid_search(const Input& in, bool trace, const Grid& grid = sta
                        in.name.c_str(), in.noise.c_str(), r, sigma, k, En, disp, change);
         }
         previous = filtered;
-      }
+        return true;
+      });
     }
   }
   return best;

@@ -43,6 +43,7 @@
 #include <CGAL/Polygon_mesh_processing/l0_denoising.h>
 #include <CGAL/Polygon_mesh_processing/non_iterative_denoising.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/residual_statistics.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -236,20 +237,14 @@ void oracle(const Mesh& noisy, const Mesh& reference, Reference& out, std::FILE*
       kernel.sigma_spatial = kernel.sigma_range = sigma;
       std::vector<D::Vec3> points = base.mesh.points;
       const std::vector<D::Vec3> input_points = points;
-      D::Face_data current = base.input_faces;
-      std::vector<D::Vec3> filtered, centroids, next;
       const std::vector<char> fixed(points.size(), 0);
       D::Fold_safeguard guard;
       guard.enabled = true;
       guard.reference = &base.input_faces.normals;
-      for(unsigned int k = 1; k <= kmax; ++k)
-      {
-        if(k > 1)
-          D::compute_face_data<Tag>(base.mesh, points, current);
-        D::intrinsic_filter_pass<Tag>(base.paths, current.normals, current.areas, kernel, filtered);
-        D::update_vertices<Tag>(base.mesh, points, filtered, fixed, v_iter, centroids, next, &guard);
+      D::iterate_filter<Tag>(base, kernel, base.input_faces, points, fixed, v_iter, guard, kmax,
+                             [&](unsigned int k, const std::vector<D::Vec3>& p, std::vector<D::Vec3>&) {
         D::Face_data fd;
-        D::compute_face_data<Tag>(base.mesh, points, fd);
+        D::compute_face_data<Tag>(base.mesh, p, fd);
         const double En = D::mean_angle_degrees(fd.normals, ref_fd.normals);
         if(En < out.oracle_En)
         {
@@ -260,11 +255,12 @@ void oracle(const Mesh& noisy, const Mesh& reference, Reference& out, std::FILE*
         }
         if(trace)
         {
-          const D::Residual_statistics st = D::residual_statistics(adjacency, points, input_points, L);
+          const D::Residual_statistics st = D::residual_statistics(adjacency, p, input_points, L);
           std::fprintf(trace, "%s\t%.1f\t%.1f\t%u\t%.4f\t%.5f\t%.5f\n", name.c_str(), sigma, r, k, En, st.rms,
                        st.correlation);
         }
-      }
+        return true;
+      });
     }
   }
 }

@@ -30,6 +30,14 @@ std::vector<K::Point_3> positions(const M& mesh)
   return p;
 }
 
+double mean_edge_length(const Mesh& mesh)
+{
+  double sum = 0;
+  for(auto e : edges(mesh))
+    sum += std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
+  return sum / num_edges(mesh);
+}
+
 TEST(AddNoise, SameSeedSameNoiseOtherSeedOtherNoise)
 {
   Mesh a = denoising_test::cube<Mesh>(5), b = a, c = a;
@@ -49,10 +57,7 @@ TEST(AddNoise, GaussianAlongNormalsWithRelativeSigma)
   // interior cells; noise is along +-z only
   Mesh mesh = denoising_test::plane_grid<Mesh>(40);
   const auto before = positions(mesh);
-  double edge_sum = 0;
-  for(auto e : edges(mesh))
-    edge_sum += std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
-  const double mean_edge = edge_sum / num_edges(mesh);
+  const double mean_edge = mean_edge_length(mesh);
   PMP::add_gaussian_noise(mesh, 0.2, CGAL::parameters::random_seed(3));
   const auto after = positions(mesh);
   double sum = 0, sum2 = 0;
@@ -102,10 +107,7 @@ TEST(AddNoise, DepthScanNoiseAlongRaysFromOneCamera)
 {
   Mesh a = denoising_test::cube<Mesh>(8), b = a, c = a;
   const auto before = positions(a);
-  double edge_sum = 0;
-  for(auto e : edges(a))
-    edge_sum += std::sqrt(CGAL::squared_distance(a.point(source(e, a)), a.point(target(e, a))));
-  const double mean_edge = edge_sum / num_edges(a);
+  const double mean_edge = mean_edge_length(a);
   PMP::add_depth_scan_noise(a, 0.3, CGAL::parameters::random_seed(5));
   PMP::add_depth_scan_noise(b, 0.3, CGAL::parameters::random_seed(5));
   PMP::add_depth_scan_noise(c, 0.3, CGAL::parameters::random_seed(6));

@@ -75,8 +75,10 @@ struct Intrinsic_denoising_report
 {
   /// whether the parameters not given were derived from the mesh
   bool automatic_parameters = false;
-  /// the noise level, as a standard deviation relative to the mean edge length
-  /// (0 if neither the automatic mode nor the stopping rule needed it)
+  /// the noise level, as a standard deviation relative to the mean edge length:
+  /// with the automatic selection, the RMS of the kept candidate's residual
+  /// (input minus result); otherwise estimated or given (0 if neither the
+  /// automatic mode nor the stopping rule needed it)
   double noise_level = 0.;
   /// whether `noise_level` was estimated (`false`: given by the caller)
   bool noise_level_estimated = false;
@@ -92,8 +94,8 @@ struct Intrinsic_denoising_report
   unsigned int maximum_iterations = 0, iterations = 0;
   /// why the iterations stopped
   Intrinsic_stop_reason stop_reason = Intrinsic_stop_reason::ITERATION_LIMIT;
-  /// with the stopping rule: the RMS vertex displacement from the input at the
-  /// end, relative to the mean edge length
+  /// with the stopping rule or the automatic selection: the RMS vertex
+  /// displacement from the input at the end, relative to the mean edge length
   double displacement = 0.;
   /// the candidates of the automatic selection (empty if it did not run:
   /// see `intrinsic_denoising()` for when it does), in the order they ran

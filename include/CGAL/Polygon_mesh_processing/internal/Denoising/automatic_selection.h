@@ -13,6 +13,7 @@
 #define CGAL_PMP_INTERNAL_DENOISING_AUTOMATIC_SELECTION_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/face_data.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/residual_statistics.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
@@ -184,25 +185,23 @@ Candidate_run run_candidate(const Intrinsic_setup& s, const Intrinsic_kernel& ke
   run.sigma = kernel.sigma_spatial;
   run.relative_radius = s.centroid_distance > 0. ? s.radius / s.centroid_distance : 0.;
   std::vector<Vec3> points = input_points, kept = input_points;
-  Face_data current = s.input_faces;
-  std::vector<Vec3> filtered, kept_normals = s.input_faces.normals, centroids, next;
-  for(unsigned int it = 0; it < max_iterations; ++it)
-  {
-    if(it > 0)
-      compute_face_data<ConcurrencyTag>(s.mesh, points, current);
-    intrinsic_filter_pass<ConcurrencyTag>(s.paths, current.normals, current.areas, kernel, filtered);
-    update_vertices<ConcurrencyTag>(s.mesh, points, filtered, fixed, vertex_iterations, centroids, next, &guard);
-    run.trajectory.push_back(residual_statistics(adjacency, points, input_points, unit));
-    if(run.trajectory.back().correlation >= Selection_rules::stop_correlation)
-    {
-      run.stopped_by_correlation = true;
-      break;
-    }
-    run.iterations = it + 1;
-    kept = points;
-    if(keep_normals)
-      kept_normals.swap(filtered);
-  }
+  std::vector<Vec3> kept_normals = keep_normals ? s.input_faces.normals : std::vector<Vec3>();
+  iterate_filter<ConcurrencyTag>(
+      s, kernel, s.input_faces, points, fixed, vertex_iterations, guard, max_iterations,
+      [&](unsigned int k, const std::vector<Vec3>& p, std::vector<Vec3>& filtered) {
+        run.trajectory.push_back(residual_statistics(adjacency, p, input_points, unit));
+        if(run.trajectory.back().correlation >= Selection_rules::stop_correlation)
+        {
+          run.stopped_by_correlation = true;
+          return false;
+        }
+        run.iterations = k;
+        kept = p;
+        if(keep_normals)
+          kept_normals.swap(filtered); // the next pass overwrites all of `filtered`
+        return true;
+      });
+  Face_data current;
   compute_face_data<ConcurrencyTag>(s.mesh, kept, current);
   run.flat_share = flat_edge_fraction<ConcurrencyTag>(s.mesh, current.normals, Selection_rules::flat_angle);
   run.points = s.mesh.vertex_values_in_input_order(kept);
