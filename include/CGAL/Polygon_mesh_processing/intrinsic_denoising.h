@@ -516,30 +516,20 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
     }
     return report.automatic_parameters ? choice.kernel : D::Setup_defaults();
   };
-  // How one schedule of the automatic mode stops: the stopping rule is not
-  // tested before `min_iterations`; `max_iterations` (if not 0) replaces the
-  // automatic mode's limit; without `displacement_test` only the convergence
-  // of the normals (under `change_tolerance`) stops.
-  struct Schedule_stop
-  {
-    unsigned int min_iterations;
-    unsigned int max_iterations = 0;
-    bool displacement_test = true;
-    double change_tolerance = D::Automatic_rules::change_tolerance;
-  };
-  // One denoising from the input with the defaults `choose(mesh)` for the
-  // parameters not given, stopped as `stop` says; the report describes it.
-  // Returns the vertices and the last filtered normals in input order.
+  // One denoising from the input with the defaults `choose_defaults(mesh)`
+  // for the parameters not given, with the stopping rule if it is on (not
+  // tested before Automatic_rules::min_iterations unless there is no noise);
+  // the report describes it. Returns the vertices and the last filtered
+  // normals in input order.
   struct Run
   {
     std::vector<D::Vec3> points, normals;
   };
-  auto run = [&](const auto& choose, const Schedule_stop& stop) {
-    D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname, choose);
-    const unsigned int iterations = choose_parameter(
-        get_parameter(np, internal_np::number_of_iterations),
-        report.automatic_parameters ? (stop.max_iterations > 0 ? stop.max_iterations : choice.max_iterations)
-                                    : D::Intrinsic_defaults::iterations);
+  auto run = [&]() {
+    D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname, choose_defaults);
+    const unsigned int iterations =
+        choose_parameter(get_parameter(np, internal_np::number_of_iterations),
+                         report.automatic_parameters ? choice.max_iterations : D::Intrinsic_defaults::iterations);
     report.sigma_spatial = s.kernel.sigma_spatial;
     report.sigma_range = s.kernel.sigma_range;
     report.neighbor_radius = s.radius;
@@ -576,15 +566,15 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
       if(!stop_rule || it + 1 == iterations)
         continue;
       // the stopping rule (not before min_iterations unless there is no noise)
-      if(it + 1 >= stop.min_iterations || report.noise_level < D::Automatic_rules::min_noise)
+      if(it + 1 >= D::Automatic_rules::min_iterations || report.noise_level < D::Automatic_rules::min_noise)
       {
         report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
-        if(stop.displacement_test && report.displacement >= target_displacement)
+        if(report.displacement >= target_displacement)
         {
           report.stop_reason = Intrinsic_stop_reason::NOISE_LEVEL_REACHED;
           break;
         }
-        if(!previous.empty() && D::mean_angle_degrees(filtered, previous) < stop.change_tolerance)
+        if(!previous.empty() && D::mean_angle_degrees(filtered, previous) < D::Automatic_rules::change_tolerance)
         {
           report.stop_reason = Intrinsic_stop_reason::CONVERGED;
           break;
@@ -618,7 +608,7 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
       maps.write_face_vectors(tmesh, result.normals, get_parameter(np, internal_np::face_normal));
     return report;
   }
-  const Run result = run(choose_defaults, Schedule_stop{D::Automatic_rules::min_iterations});
+  const Run result = run();
   maps.write_points(tmesh, result.points);
   if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
     maps.write_face_vectors(tmesh, result.normals, get_parameter(np, internal_np::face_normal));
