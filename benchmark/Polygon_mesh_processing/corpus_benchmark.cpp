@@ -21,6 +21,13 @@
 //   corpus_benchmark --candidates
 //       per input and candidate of the automatic selection: E_n and
 //       statistics of the residual at its stop (tab-separated, for study)
+//   corpus_benchmark --irregular [--results OUT] [--no-baselines]
+//       the vertex updates on the irregular meshes: each with Gaussian noise
+//       at sigma_E 0.05, 0.1 and 0.3, seed 1; per input the noisy mesh, the
+//       fixed setting and the automatic mode with eq. 10 and with the
+//       least-squares update, CGAL's smooth_shape() at its best time step
+//       and the classic methods at their defaults (E_n, E_v, faces turned
+//       against the input); --no-baselines skips the last two
 //
 // Inputs (the rule, applied to the meshes sorted by file name, index i):
 // Gaussian noise along vertex normals at sigma_E L[i mod 5] and
@@ -42,6 +49,7 @@
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 #include <CGAL/Polygon_mesh_processing/l0_denoising.h>
 #include <CGAL/Polygon_mesh_processing/non_iterative_denoising.h>
+#include <CGAL/Polygon_mesh_processing/smooth_shape.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/residual_statistics.h>
@@ -497,13 +505,145 @@ void summary(const std::vector<Row>& rows, const char* group)
   std::printf("\n");
 }
 
+// Faces of `m` whose normal points against (or is orthogonal to) the same
+// face's normal in `input`; faces degenerate in either are not counted.
+std::size_t turned_faces(const Mesh& m, const Mesh& input)
+{
+  std::size_t n = 0;
+  for(auto f : faces(m))
+  {
+    const auto h = halfedge(f, m);
+    const auto normal = [&](const Mesh& mm) {
+      const K::Point_3 &a = mm.point(source(h, mm)), &b = mm.point(target(h, mm)),
+                       &c = mm.point(target(next(h, mm), mm));
+      return CGAL::cross_product(b - a, c - a);
+    };
+    const K::Vector_3 n0 = normal(input), n1 = normal(m);
+    if(n0.squared_length() > 0. && n1.squared_length() > 0. && !(n0 * n1 > 0.))
+      ++n;
+  }
+  return n;
+}
+
+struct Outcome
+{
+  double En = 0., Ev = 0.;
+  std::size_t turned = 0;
+  double seconds = 0.;
+};
+
+template <typename Method>
+Outcome outcome(const Mesh& noisy, const Mesh& reference, const Method& method)
+{
+  Mesh m = noisy;
+  const auto t0 = std::chrono::steady_clock::now();
+  method(m);
+  Outcome o;
+  o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  o.En = PMP::face_normal_error(m, reference);
+  o.Ev = PMP::vertex_position_error(m, reference);
+  o.turned = turned_faces(m, noisy);
+  return o;
+}
+
+// --irregular: see the usage at the top.
+void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool baselines)
+{
+  const char* const columns[] = {"fixed_paper", "fixed_ls", "auto_paper", "auto_ls", "smooth_shape", "best_classic"};
+  if(results)
+  {
+    std::fprintf(results, "# mesh\tnoise\tseed\tnoisy_En\tnoisy_Ev");
+    for(const char* c : columns)
+      std::fprintf(results, "\t%s_En\t%s_Ev\t%s_turned\t%s_s", c, c, c, c);
+    std::fprintf(results, "\tsmooth_time\n");
+  }
+  std::printf("| input | noisy | fixed eq.10 | fixed LS | auto eq.10 | auto LS | smooth_shape (best) | best classic | "
+              "turned (fixed LS, auto LS) | s (fixed eq.10, fixed LS, auto LS) |\n|---|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<std::string> seen;
+  for(const Input& in0 : inputs)
+  {
+    if(!in0.mesh.irregular || std::find(seen.begin(), seen.end(), in0.mesh.file) != seen.end())
+      continue;
+    seen.push_back(in0.mesh.file);
+    for(double level : {0.05, 0.1, 0.3})
+    {
+      char label[32];
+      std::snprintf(label, sizeof label, "gauss%.2f", level);
+      const Input in{in0.mesh, {label, Noise::GAUSSIAN, level}};
+      Mesh reference, noisy;
+      make_noisy(in, reference, noisy);
+      const double noisy_En = PMP::face_normal_error(noisy, reference);
+      const double noisy_Ev = PMP::vertex_position_error(noisy, reference);
+      const auto fixed = [](PMP::Vertex_update u) {
+        return [u](Mesh& m) { PMP::intrinsic_denoising<Tag>(m, CGAL::parameters::automatic_parameters(false).vertex_update(u)); };
+      };
+      const auto automatic = [](PMP::Vertex_update u) {
+        return [u](Mesh& m) { PMP::intrinsic_denoising<Tag>(m, CGAL::parameters::vertex_update(u)); };
+      };
+      std::vector<Outcome> o;
+      o.push_back(outcome(noisy, reference, fixed(PMP::Vertex_update::PAPER)));
+      o.push_back(outcome(noisy, reference, fixed(PMP::Vertex_update::LEAST_SQUARES)));
+      o.push_back(outcome(noisy, reference, automatic(PMP::Vertex_update::PAPER)));
+      o.push_back(outcome(noisy, reference, automatic(PMP::Vertex_update::LEAST_SQUARES)));
+      // smooth_shape: one step, time = c * (mean edge length)^2, best c
+      double L = 0.;
+      for(auto e : edges(noisy))
+        L += std::sqrt(CGAL::squared_distance(noisy.point(source(e, noisy)), noisy.point(target(e, noisy))));
+      L /= double(num_edges(noisy));
+      Outcome best_smooth;
+      best_smooth.En = 1e300;
+      double best_time = 0.;
+      for(double c : {0.01, 0.03, 0.1, 0.3, 1., 3., 10., 30.})
+        if(baselines)
+      {
+        const Outcome s = outcome(noisy, reference, [&](Mesh& m) { PMP::smooth_shape(m, c * L * L); });
+        if(s.En < best_smooth.En)
+        {
+          best_smooth = s;
+          best_time = c;
+        }
+      }
+      o.push_back(best_smooth);
+      const std::vector<std::function<void(Mesh&)>> classics = {
+          [](Mesh& m) { PMP::bilateral_mesh_denoising<Tag>(m); },
+          [](Mesh& m) { PMP::non_iterative_denoising<Tag>(m); },
+          [](Mesh& m) { PMP::fast_feature_preserving_denoising<Tag>(m); },
+          [](Mesh& m) { PMP::bilateral_normal_denoising<Tag>(m); },
+          [](Mesh& m) { PMP::l0_denoising<Tag>(m); },
+          [](Mesh& m) { PMP::guided_normal_denoising<Tag>(m); }};
+      Outcome best_classic;
+      best_classic.En = 1e300;
+      for(const auto& c : classics)
+        if(baselines)
+      {
+        const Outcome r = outcome(noisy, reference, c);
+        if(r.En < best_classic.En)
+          best_classic = r;
+      }
+      o.push_back(best_classic);
+      std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f (%gL^2) | %.2f | %zu, %zu | %.2f, %.2f, %.2f |\n",
+                  in.name().c_str(), noisy_En, o[0].En, o[1].En, o[2].En, o[3].En, o[4].En, best_time, o[5].En,
+                  o[1].turned, o[3].turned, o[0].seconds, o[1].seconds, o[3].seconds);
+      std::fflush(stdout);
+      if(results)
+      {
+        std::fprintf(results, "%s\t%.4f\t%.4g", in.key().c_str(), noisy_En, noisy_Ev);
+        for(const Outcome& x : o)
+          std::fprintf(results, "\t%.4f\t%.4g\t%zu\t%.3f", x.En, x.Ev, x.turned, x.seconds);
+        std::fprintf(results, "\t%g\n", best_time);
+        std::fflush(results);
+      }
+    }
+  }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
   std::string reference_file = std::string(CORPUS_DIR) + "/corpus_reference.tsv", build_file, trace_file,
               results_file, only;
-  bool list = false, candidates = false;
+  bool list = false, candidates = false, irregular_mode = false, baselines = true;
   std::size_t stride = 1, offset = 0;
   for(int i = 1; i < argc; ++i)
   {
@@ -520,6 +660,10 @@ int main(int argc, char** argv)
       list = true;
     else if(a == "--candidates")
       candidates = true;
+    else if(a == "--irregular")
+      irregular_mode = true;
+    else if(a == "--no-baselines")
+      baselines = false;
     else if(a == "--build-reference")
       build_file = next();
     else if(a == "--trace")
@@ -537,7 +681,7 @@ int main(int argc, char** argv)
     else
     {
       std::cerr << "usage: corpus_benchmark [--list] [--build-reference FILE [--trace FILE]] [--reference FILE] "
-                   "[--results FILE] [--stride N] [--offset M] [--only TEXT]\n";
+                   "[--results FILE] [--stride N] [--offset M] [--only TEXT] [--candidates] [--irregular [--no-baselines]]\n";
       return 2;
     }
   }
@@ -552,6 +696,14 @@ int main(int argc, char** argv)
   {
     for(const Input& in : inputs)
       std::printf("%s\t%zu faces\t%s\n", in.name().c_str(), in.mesh.faces, in.mesh.irregular ? "irregular" : "regular");
+    return 0;
+  }
+  if(irregular_mode)
+  {
+    std::FILE* results = results_file.empty() ? nullptr : std::fopen(results_file.c_str(), "w");
+    irregular_study(inputs, results, baselines);
+    if(results)
+      std::fclose(results);
     return 0;
   }
   if(candidates)

@@ -70,7 +70,7 @@ struct Settings
   bool fixed = false, progress = false;
   std::string stop_when_converged;
   double spatial_exponent = 1., range_exponent = 1.;
-  std::string paths = "square", threads = "all";
+  std::string paths = "square", threads = "all", vertex_update = "paper";
   bool step_length = false, self_weight = false, no_fold_guard = false, quiet = false;
   double noise = 0., impulsive = 1.;
 };
@@ -217,6 +217,9 @@ po::options_description make_options(Settings &s)
        "with --paths geodesic: rings of faces added around each neighbourhood patch")
     ("step-length", po::bool_switch(&s.step_length), "multiply the terms of eq. 9 by the step lengths (eq. 4)")
     ("self-weight", po::bool_switch(&s.self_weight), "include face i's own normal in its average")
+    ("vertex-update", po::value(&s.vertex_update)->value_name("UPDATE")->default_value(s.vertex_update),
+       "paper (eq. 10) or least-squares (each vertex step solves for the positions that fit the filtered normals "
+       "over the whole mesh)")
     ("no-fold-guard", po::bool_switch(&s.no_fold_guard),
        "apply eq. 10 exactly, as the paper does, without the safeguard against folded triangles")
     ("threads", po::value(&s.threads)->value_name("1|all")->default_value(s.threads),
@@ -332,7 +335,7 @@ std::string check_method_options(const Method_settings &m, const po::variables_m
   if(m.method != "intrinsic")
     for(const char *name : {"iterations", "vertex-iterations", "sigma-spatial", "sigma-range", "radius",
                             "relative-radius", "spatial-exponent", "range-exponent", "paths", "geodesic-rings",
-                            "step-length", "self-weight", "no-fold-guard", "fixed", "noise-level",
+                            "step-length", "self-weight", "no-fold-guard", "vertex-update", "fixed", "noise-level",
                             "stop-when-converged"})
       if(vm.count(name) && !vm[name].defaulted())
         return std::string("--") + name + " applies to --method intrinsic only";
@@ -506,6 +509,8 @@ int main(int argc, char **argv)
     return fail(exit_usage, "--seed must lie in [0, 4294967295]");
   if(s.paths != "square" && s.paths != "direct" && s.paths != "graph" && s.paths != "geodesic")
     return fail(exit_usage, "--paths must be square, direct, graph or geodesic, not '" + s.paths + "'");
+  if(s.vertex_update != "paper" && s.vertex_update != "least-squares")
+    return fail(exit_usage, "--vertex-update must be paper or least-squares, not '" + s.vertex_update + "'");
   if(s.threads != "1" && s.threads != "all")
     return fail(exit_usage, "--threads must be 1 or all, not '" + s.threads + "'");
   if(!positive_finite(s.sigma_spatial) || !positive_finite(s.sigma_range) || !positive_finite(s.spatial_exponent) ||
@@ -614,6 +619,8 @@ int main(int argc, char **argv)
                       .geodesic_patch_rings(static_cast<unsigned int>(s.patch_rings))
                       .include_self_weight(s.self_weight)
                       .prevent_folds(!s.no_fold_guard)
+                      .vertex_update(s.vertex_update == "paper" ? PMP::Vertex_update::PAPER
+                                                                : PMP::Vertex_update::LEAST_SQUARES)
                       .automatic_parameters(!s.fixed)
                       .stop_when_converged(stop)
                       .progress_callback(progress);
@@ -644,7 +651,9 @@ int main(int argc, char **argv)
   {
     std::cout << "denoised in " << seconds << " s: " << s.paths << " paths, n = " << s.spatial_exponent
               << ", m = " << s.range_exponent << (s.step_length ? ", step lengths" : "")
-              << (s.no_fold_guard ? ", no fold guard" : "") << ", threads " << s.threads << "\n";
+              << (s.no_fold_guard ? ", no fold guard" : "")
+              << (s.vertex_update == "paper" ? "" : ", least-squares vertex update") << ", threads " << s.threads
+              << "\n";
     std::cout << denoise_file::describe(run.report);
   }
 

@@ -103,3 +103,24 @@ TEST(FoldSafeguard, NoFlippedFacesOnImpulsiveNoise)
 {
   check_no_flips({"fandisk impulsive 10% sigma_E 1.0", true, 1.0});
 }
+
+TEST(FoldSafeguard, NoFlippedFacesWithTheLeastSquaresUpdate)
+{
+  // the global update moves every vertex at once: the safeguard must hold it
+  // too, in the fixed setting and in the automatic mode
+  const Mesh reference = noisy_fandisk(false, 0.);
+  const Mesh noisy = noisy_fandisk(false, 0.5);
+  Mesh fixed = noisy, automatic = noisy;
+  const PMP::Intrinsic_denoising_report rf = PMP::intrinsic_denoising(
+      fixed, CGAL::parameters::automatic_parameters(false).vertex_update(PMP::Vertex_update::LEAST_SQUARES));
+  const PMP::Intrinsic_denoising_report ra =
+      PMP::intrinsic_denoising(automatic, CGAL::parameters::vertex_update(PMP::Vertex_update::LEAST_SQUARES));
+  EXPECT_TRUE(rf.vertex_update == PMP::Vertex_update::LEAST_SQUARES);
+  EXPECT_TRUE(ra.vertex_update == PMP::Vertex_update::LEAST_SQUARES);
+  std::printf("least squares, fandisk sigma_E 0.5: E_n fixed %.3f, automatic %.3f (noisy %.3f)\n",
+              PMP::face_normal_error(fixed, reference), PMP::face_normal_error(automatic, reference),
+              PMP::face_normal_error(noisy, reference));
+  EXPECT_EQ(flipped_faces(noisy, fixed), 0u);
+  EXPECT_EQ(flipped_faces(noisy, automatic), 0u);
+  EXPECT_LT(PMP::face_normal_error(fixed, reference), PMP::face_normal_error(noisy, reference));
+}

@@ -90,6 +90,8 @@ struct Intrinsic_denoising_report
   double neighbor_radius = 0., relative_neighbor_radius = 0.;
   /// \f$v_{iter}\f$ used
   unsigned int vertex_iterations = 0;
+  /// the vertex update used
+  Vertex_update vertex_update = Vertex_update::PAPER;
   /// the iteration limit, and the iterations run
   unsigned int maximum_iterations = 0, iterations = 0;
   /// why the iterations stopped
@@ -125,7 +127,8 @@ Candidate_run select_automatically(const TriangleMesh& tmesh, const NamedParamet
   constexpr bool keep_normals = !is_default_parameter<NamedParameters, internal_np::face_normal_t>::value;
   const auto progress = choose_parameter(get_parameter(np, internal_np::progress_callback), No_progress());
   Automatic_selection<ConcurrencyTag> selection(
-      vertex_iterations, choose_parameter(get_parameter(np, internal_np::prevent_folds), true), keep_normals);
+      vertex_iterations, choose_parameter(get_parameter(np, internal_np::prevent_folds), true), keep_normals,
+      choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER));
   const std::vector<char> constrained = maps.constrained(tmesh);
   constexpr std::size_t n = Selection_rules::number_of_candidates;
   for(std::size_t c = 0; c < n; ++c)
@@ -169,6 +172,7 @@ Candidate_run select_automatically(const TriangleMesh& tmesh, const NamedParamet
   report.relative_neighbor_radius = w.relative_neighbor_radius;
   report.neighbor_radius = w.relative_neighbor_radius * selection.centroid_distance();
   report.vertex_iterations = vertex_iterations;
+  report.vertex_update = selection.least_squares_update() ? Vertex_update::LEAST_SQUARES : Vertex_update::PAPER;
   report.maximum_iterations = Selection_rules::max_iterations;
   report.iterations = w.iterations;
   report.stop_reason =
@@ -426,6 +430,16 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
       \cgalParamType{unsigned int}
       \cgalParamDefault{`2`}
     \cgalParamNEnd
+    \cgalParamNBegin{vertex_update}
+      \cgalParamDescription{how the vertices follow the filtered normals after each pass:
+                            `Vertex_update::PAPER` is eq. 10; `Vertex_update::LEAST_SQUARES` makes each of the
+                            \f$v_{iter}\f$ steps a global one that solves for the positions fitting the filtered
+                            normals over the whole mesh, with a weak pull to the positions before the step (see
+                            `update_vertices_from_face_normals()` and the manual for when it helps). The fold
+                            safeguard restricts both.}
+      \cgalParamType{`CGAL::Polygon_mesh_processing::Vertex_update`}
+      \cgalParamDefault{`Vertex_update::PAPER`}
+    \cgalParamNEnd
     \cgalParamNBegin{sigma_spatial, sigma_range, spatial_exponent, range_exponent, neighbor_radius, relative_neighbor_radius, path_strategy, use_step_length, geodesic_patch_rings, include_self_weight}
       \cgalParamDescription{as for `intrinsic_filter_face_normals()`, except that in the automatic mode the defaults
                             of \f$\sigma_s\f$, \f$\sigma_r\f$ and the radius are derived from the noise level}
@@ -546,6 +560,9 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
     const std::vector<char> fixed = s.mesh.vertex_values_from_input_order(maps.constrained(tmesh));
     D::Fold_safeguard guard;
     guard.enabled = choose_parameter(get_parameter(np, internal_np::prevent_folds), true);
+    D::Least_squares_recovery recovery = D::make_vertex_recovery(
+        choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER));
+    report.vertex_update = recovery.enabled ? Vertex_update::LEAST_SQUARES : Vertex_update::PAPER;
     const std::vector<D::Vec3> input_normals = guard.enabled ? s.input_faces.normals : std::vector<D::Vec3>();
     guard.reference = &input_normals;
 
@@ -560,7 +577,8 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
       if(it > 0)
         D::compute_face_data<ConcurrencyTag>(s.mesh, points, current);
       D::intrinsic_filter_pass<ConcurrencyTag>(s.paths, current.normals, current.areas, s.kernel, filtered);
-      D::update_vertices<ConcurrencyTag>(s.mesh, points, filtered, fixed, vertex_iterations, centroids, next, &guard);
+      D::update_vertices<ConcurrencyTag>(s.mesh, points, filtered, fixed, vertex_iterations, centroids, next, &guard,
+                                         &recovery);
       report.iterations = it + 1;
       progress(std::size_t(it + 1), std::size_t(iterations));
       if(!stop_rule || it + 1 == iterations)

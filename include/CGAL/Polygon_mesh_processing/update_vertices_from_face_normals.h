@@ -30,6 +30,19 @@ namespace Polygon_mesh_processing {
 
   Every normal-filtering denoiser of the package ends with this update.
 
+  With `vertex_update(Vertex_update::LEAST_SQUARES)` each step is global
+  instead: the vertices move to the minimiser of
+  \f[ \sum_f \sum_{(a,b)\ \mathrm{edge\ of}\ f} \big(n_f\cdot(x_a - x_b)\big)^2 + \alpha \sum_v |F_v|\,|x_v - v^{(t)}|^2, \f]
+  the misfit of which eq. 10 is a local descent step, plus a weak pull
+  (\f$\alpha = 0.05\f$) to the positions before the step, which fixes what
+  the misfit leaves free (a translation or scaling of the whole mesh). The
+  sparse system is solved by preconditioned conjugate gradients without
+  storing its matrix. Where the target normals are right this recovers the
+  surface in far fewer steps than eq. 10 (on CGAL's `b9_mesh.off` with noise
+  \f$\sigma_E = 0.05\f$ and its noise-free normals as targets, E_n after one
+  step: 0.25 degrees against 1.53 with eq. 10); where they are wrong it fits
+  the error as faithfully.
+
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
           `CGAL::Parallel_if_available_tag`; the result does not depend on it.
   \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`
@@ -46,6 +59,11 @@ namespace Polygon_mesh_processing {
       \cgalParamDescription{the number of steps \f$t\f$}
       \cgalParamType{unsigned int}
       \cgalParamDefault{`2`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_update}
+      \cgalParamDescription{`Vertex_update::PAPER` (eq. 10) or `Vertex_update::LEAST_SQUARES` (global steps, above)}
+      \cgalParamType{`CGAL::Polygon_mesh_processing::Vertex_update`}
+      \cgalParamDefault{`Vertex_update::PAPER`}
     \cgalParamNEnd
     \cgalParamNBegin{prevent_folds}
       \cgalParamDescription{if `true`, each step is restricted so that no face comes to point against its orientation
@@ -114,8 +132,11 @@ void update_vertices_from_face_normals(TriangleMesh& tmesh, const FaceNormalMap&
   }
   D::Fold_safeguard guard;
   guard.enabled = parameters::choose_parameter(parameters::get_parameter(np, internal_np::prevent_folds), true);
+  D::Least_squares_recovery recovery = D::make_vertex_recovery(
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER));
   std::vector<D::Vec3> centroids, next;
-  D::update_vertices<ConcurrencyTag>(m, m.points, n, maps.constrained(tmesh), iterations, centroids, next, &guard);
+  D::update_vertices<ConcurrencyTag>(m, m.points, n, maps.constrained(tmesh), iterations, centroids, next, &guard,
+                                     &recovery);
   maps.write_points(tmesh, m.points);
 }
 

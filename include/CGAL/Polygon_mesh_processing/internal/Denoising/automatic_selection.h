@@ -179,6 +179,7 @@ template <typename ConcurrencyTag>
 Candidate_run run_candidate(const Intrinsic_setup& s, const Intrinsic_kernel& kernel, const Csr& adjacency,
                             const std::vector<Vec3>& input_points, const std::vector<char>& fixed,
                             unsigned int vertex_iterations, Fold_safeguard& guard, double unit, bool keep_normals,
+                            Least_squares_recovery* recovery = nullptr,
                             unsigned int max_iterations = Selection_rules::max_iterations)
 {
   Candidate_run run;
@@ -200,7 +201,8 @@ Candidate_run run_candidate(const Intrinsic_setup& s, const Intrinsic_kernel& ke
         if(keep_normals)
           kept_normals.swap(filtered); // the next pass overwrites all of `filtered`
         return true;
-      });
+      },
+      recovery);
   Face_data current;
   compute_face_data<ConcurrencyTag>(s.mesh, kept, current);
   run.flat_share = flat_edge_fraction<ConcurrencyTag>(s.mesh, current.normals, Selection_rules::flat_angle);
@@ -218,8 +220,9 @@ template <typename ConcurrencyTag>
 class Automatic_selection
 {
 public:
-  Automatic_selection(unsigned int vertex_iterations, bool prevent_folds, bool keep_normals)
-      : vertex_iterations_(vertex_iterations), keep_normals_(keep_normals)
+  Automatic_selection(unsigned int vertex_iterations, bool prevent_folds, bool keep_normals,
+                      Vertex_update vertex_update = Vertex_update::PAPER)
+      : vertex_iterations_(vertex_iterations), keep_normals_(keep_normals), vertex_update_(vertex_update)
   {
     guard_.enabled = prevent_folds;
   }
@@ -236,6 +239,7 @@ public:
     guard_.reference = guard_.enabled ? &input_normals_ : nullptr;
     adjacency_ = vertex_adjacency(setup_.mesh);
     mean_edge_ = mean_edge_length(setup_.mesh);
+    recovery_ = make_vertex_recovery(vertex_update_);
   }
 
   // Runs the candidate of kernel width `sigma` on the current paths.
@@ -244,7 +248,7 @@ public:
     Intrinsic_kernel kernel = setup_.kernel;
     kernel.sigma_spatial = kernel.sigma_range = sigma;
     runs_.push_back(run_candidate<ConcurrencyTag>(setup_, kernel, adjacency_, setup_.mesh.points, fixed_,
-                                                  vertex_iterations_, guard_, mean_edge_, keep_normals_));
+                                                  vertex_iterations_, guard_, mean_edge_, keep_normals_, &recovery_));
   }
 
   // Scores the candidates and returns the index of the one kept.
@@ -253,11 +257,14 @@ public:
   std::vector<Candidate_run>& runs() { return runs_; }
   double mean_edge_length_of_input() const { return mean_edge_; }
   double centroid_distance() const { return setup_.centroid_distance; }
+  bool least_squares_update() const { return recovery_.enabled; }
 
 private:
   unsigned int vertex_iterations_;
   bool keep_normals_;
+  Vertex_update vertex_update_;
   Fold_safeguard guard_;
+  Least_squares_recovery recovery_;
   Intrinsic_setup setup_;
   std::vector<char> fixed_;
   std::vector<Vec3> input_normals_;

@@ -26,10 +26,13 @@ namespace Denoising {
 // when `points` is the input). After iteration k (from 1),
 // `after(k, points, filtered)` is called with the filtered normals of that
 // pass; it returns false to stop. Returns the number of iterations run.
+// With an enabled `recovery`, the vertices move by its least-squares step
+// instead of eq. 10 (see update_vertices).
 template <typename ConcurrencyTag, typename After>
 unsigned int iterate_filter(const Intrinsic_setup& s, const Intrinsic_kernel& kernel, const Face_data& start,
                             std::vector<Vec3>& points, const std::vector<char>& fixed, unsigned int vertex_iterations,
-                            Fold_safeguard& guard, unsigned int max_iterations, const After& after)
+                            Fold_safeguard& guard, unsigned int max_iterations, const After& after,
+                            Least_squares_recovery* recovery = nullptr)
 {
   Face_data current = start;
   std::vector<Vec3> filtered, centroids, next;
@@ -38,7 +41,8 @@ unsigned int iterate_filter(const Intrinsic_setup& s, const Intrinsic_kernel& ke
     if(it > 0)
       compute_face_data<ConcurrencyTag>(s.mesh, points, current);
     intrinsic_filter_pass<ConcurrencyTag>(s.paths, current.normals, current.areas, kernel, filtered);
-    update_vertices<ConcurrencyTag>(s.mesh, points, filtered, fixed, vertex_iterations, centroids, next, &guard);
+    update_vertices<ConcurrencyTag>(s.mesh, points, filtered, fixed, vertex_iterations, centroids, next, &guard,
+                                    recovery);
     if(!after(it + 1, static_cast<const std::vector<Vec3>&>(points), filtered))
       return it + 1;
   }

@@ -58,6 +58,19 @@ enum class Intrinsic_signal {
   CONSTANT
 };
 
+/// \ingroup PMP_denoising_grp
+/// How the vertices follow the filtered face normals after each filter pass.
+enum class Vertex_update {
+  /// eq. 10 of the paper: \f$v_{iter}\f$ local steps, each vertex moved along
+  /// the normals of its faces toward the planes through their centroids
+  PAPER,
+  /// global steps: each moves to the positions that minimise the misfit
+  /// eq. 10 descends, \f$\sum_f \sum_{(a,b) \in f} (n_f \cdot (x_a - x_b))^2\f$,
+  /// over the whole mesh at once, plus a weak pull to the positions before
+  /// the step (a sparse linear system solved by conjugate gradients)
+  LEAST_SQUARES
+};
+
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 

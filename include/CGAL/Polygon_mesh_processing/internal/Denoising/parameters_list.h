@@ -34,6 +34,8 @@ CGAL_add_named_parameter(geodesic_patch_rings_t, geodesic_patch_rings, geodesic_
 // whether the vertex update (eq. 10) is restricted so that no face folds
 // (default true; false reproduces the paper's update exactly)
 CGAL_add_named_parameter(prevent_folds_t, prevent_folds, prevent_folds)
+// how the vertices follow the filtered normals (Vertex_update)
+CGAL_add_named_parameter(vertex_update_t, vertex_update, vertex_update)
 // classic methods (issue 9)
 // T of Sun et al. 2007: faces whose normals make n_i . n_j <= T get no weight
 CGAL_add_named_parameter(normal_threshold_t, normal_threshold, normal_threshold)

@@ -7,6 +7,7 @@
 #define CGAL_PMP_INTERNAL_DENOISING_VERTEX_UPDATE_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/face_data.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/least_squares_vertex_update.h>
 
 #include <array>
 #include <cstdint>
@@ -161,11 +162,14 @@ void apply_fold_safeguard(const Flat_mesh& m, const std::vector<Vec3>& points, s
 // the centroids of that step). Vertices with `fixed[v] != 0` and vertices with
 // no incident face do not move. `centroids` is scratch space. With a `guard`
 // that is enabled, every step is restricted so that no face folds (see
-// Fold_safeguard).
+// Fold_safeguard). With a `least_squares` recovery that is enabled, each step
+// is a least-squares step (see Least_squares_recovery) instead of eq. 10,
+// restricted by the guard in the same way.
 template <typename ConcurrencyTag>
 void update_vertices(const Flat_mesh& m, std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                      const std::vector<char>& fixed, unsigned int iterations, std::vector<Vec3>& centroids,
-                     std::vector<Vec3>& next, Fold_safeguard* guard = nullptr)
+                     std::vector<Vec3>& next, Fold_safeguard* guard = nullptr,
+                     Least_squares_recovery* least_squares = nullptr)
 {
   const std::size_t nf = m.number_of_faces(), nv = m.number_of_vertices();
   std::vector<Vec3> start_orientation;
@@ -185,8 +189,17 @@ void update_vertices(const Flat_mesh& m, std::vector<Vec3>& points, const std::v
     active_guard->reference = &start_orientation;
   centroids.resize(nf);
   next.resize(nv);
+  const bool global = least_squares && least_squares->enabled;
   for(unsigned int it = 0; it < iterations; ++it)
   {
+    if(global)
+    {
+      least_squares_vertex_step<ConcurrencyTag>(m, points, normals, fixed, *least_squares, next);
+      if(active_guard)
+        apply_fold_safeguard<ConcurrencyTag>(m, points, next, normals, *active_guard);
+      points.swap(next);
+      continue;
+    }
     for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
       for(std::size_t f = b; f < e; ++f)
       {
