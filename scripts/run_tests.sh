@@ -9,6 +9,10 @@ bash scripts/install_render_deps.sh
 bash scripts/build.sh
 cd build
 ctest --output-on-failure -j"$(nproc)"
+cd ..
+# install into a temporary prefix; build and run test/downstream against it
+bash scripts/test_install.sh
+cd build
 # The manual (doc/Polygon_mesh_processing): Doxygen with WARN_AS_ERROR, so any
 # warning fails CI. Doxygen is installed by install_deps.sh; skipped without it.
 if command -v doxygen >/dev/null 2>&1; then
