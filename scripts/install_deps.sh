@@ -2,7 +2,8 @@
 # Installs the Debian packages the project needs (run as root on Debian 12).
 set -euo pipefail
 packages=(g++ cmake make ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev
-          libboost-program-options-dev libtbb-dev libgtest-dev libbenchmark-dev doxygen)
+          libboost-program-options-dev libtbb-dev libgtest-dev libbenchmark-dev doxygen
+          dpkg-dev libjs-mathjax)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,0 +1,27 @@
+# Writes the manual page of the `denoise` tool from its --help text:
+#   cmake -DHELP=denoise_help.txt -DOUT=denoise.1 -DVERSION=x.y.z -P make_manpage.cmake
+# A line in capitals at the start of the line is a section heading; every
+# section's text is kept as laid out (no filling).
+file(STRINGS ${HELP} lines)
+set(page ".TH DENOISE 1 \"\" \"${VERSION}\" \"CGAL intrinsic denoising\"\n")
+set(in_block OFF)
+foreach(line IN LISTS lines)
+  if(line MATCHES "^[A-Z][A-Z ]+$")
+    if(in_block)
+      string(APPEND page ".fi\n")
+    endif()
+    string(APPEND page ".SH ${line}\n.nf\n")
+    set(in_block ON)
+  else()
+    string(REGEX REPLACE "^    " "" line "${line}")
+    string(REPLACE "\\" "\\e" line "${line}")
+    if(line MATCHES "^[.']")
+      set(line "\\&${line}")
+    endif()
+    string(APPEND page "${line}\n")
+  endif()
+endforeach()
+if(in_block)
+  string(APPEND page ".fi\n")
+endif()
+file(WRITE ${OUT} "${page}")
