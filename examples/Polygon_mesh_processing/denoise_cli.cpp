@@ -32,6 +32,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -555,14 +556,22 @@ int main(int argc, char **argv)
 
   // input
   Mesh input, reference;
-  std::string problem = denoise_file::read_mesh_file(s.input, input);
+  std::vector<std::string> warnings;
+  const auto warn = [&warnings](const std::string& file) {
+    for(const std::string& w : warnings)
+      std::cerr << "denoise: warning: '" << file << "': " << w << "\n";
+    warnings.clear();
+  };
+  std::string problem = denoise_file::read_mesh_file(s.input, input, &warnings);
   if(!problem.empty())
     return fail(exit_input, problem);
+  warn(s.input);
   if(!s.reference.empty())
   {
-    problem = denoise_file::read_mesh_file(s.reference, reference);
+    problem = denoise_file::read_mesh_file(s.reference, reference, &warnings);
     if(!problem.empty())
       return fail(exit_input, "reference " + problem);
+    warn(s.reference);
     if(num_faces(reference) != num_faces(input))
       return fail(exit_input, "the reference has " + std::to_string(num_faces(reference)) + " faces, the input " +
                                   std::to_string(num_faces(input)));

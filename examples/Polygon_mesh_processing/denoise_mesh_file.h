@@ -11,6 +11,8 @@
 
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 
+#include "denoise_mesh_readers.h"
+
 #include <CGAL/IO/OFF/File_scanner_OFF.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -66,14 +68,38 @@ inline std::string validate(const Mesh& mesh)
   return std::string();
 }
 
+// The mesh of a polygon soup read from a file: a face may not use a vertex
+// twice; a soup that is not a manifold surface is repaired by
+// orient_polygon_soup() (vertices are duplicated on non-manifold edges and
+// vertices; the faces stay). Returns "" or a one-line message.
+inline std::string soup_to_mesh(Soup& soup, Mesh& mesh)
+{
+  for(std::size_t i = 0; i < soup.polygons.size(); ++i)
+  {
+    const std::vector<std::size_t>& polygon = soup.polygons[i];
+    for(std::size_t j = 0; j < polygon.size(); ++j)
+      for(std::size_t k = j + 1; k < polygon.size(); ++k)
+        if(polygon[j] == polygon[k])
+          return "face " + std::to_string(i) + " uses a vertex twice";
+  }
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  if(!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
+    PMP::orient_polygon_soup(soup.points, soup.polygons);
+  if(!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
+    return "the faces do not form a surface, even after orient_polygon_soup()";
+  PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
+  return std::string();
+}
+
 // Reads OFF data of `byte_count` bytes as CGAL's OFF reader does (same
 // scanner), but with bounds CGAL's reader lacks: the counts of the header and
 // the size of each face must fit in the data (CGAL allocates them before
 // reading, so a 20-byte file announcing 2e9 vertices would ask for 48 GB), and
-// indices must be in range. A soup that is not a manifold surface is repaired
-// by orient_polygon_soup() (vertices are duplicated on non-manifold edges and
-// vertices; the faces stay). Returns "" or a one-line message.
-inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh)
+// indices must be in range; then soup_to_mesh(). Lines after the faces the
+// header announces are ignored, and counted in `warnings` (text OFF). Returns
+// "" or a one-line message.
+inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh,
+                            std::vector<std::string>* warnings = nullptr)
 {
   CGAL::File_scanner_OFF scanner(in, false);
   if(in.fail())
@@ -165,42 +191,55 @@ inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh
         polygon[j] = std::size_t(entries[j + 1]);
       }
     }
-    for(std::size_t j = 0; j < polygon.size(); ++j)
-      for(std::size_t k = j + 1; k < polygon.size(); ++k)
-        if(polygon[j] == polygon[k])
-          return "face " + std::to_string(i) + " uses a vertex twice";
     polygons.push_back(std::move(polygon));
   }
   if(!in && !in.eof())
     return "malformed OFF data";
-  namespace PMP = CGAL::Polygon_mesh_processing;
-  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    PMP::orient_polygon_soup(points, polygons);
-  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    return "the faces do not form a surface, even after orient_polygon_soup()";
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  return std::string();
+  if(!scanner.binary() && warnings)
+  {
+    // more face lines than the header announces: read as the header says, but said
+    std::size_t extra = 0;
+    std::string line;
+    while(std::getline(in, line))
+    {
+      line = line.substr(0, line.find('#'));
+      if(line.find_first_not_of(" \t\r") != std::string::npos)
+        ++extra;
+    }
+    if(extra > 0)
+      warnings->push_back(std::to_string(extra) + " line" + (extra > 1 ? "s" : "") + " after the " +
+                          std::to_string(nf) + " faces the OFF header announces, ignored");
+  }
+  Soup soup{std::move(points), std::move(polygons)};
+  return soup_to_mesh(soup, mesh);
 }
 
 // Reads a mesh in `format` ("off", "obj", "ply" or "stl") of `byte_count`
 // bytes from `in`, then validates it. Returns "" on success, a one-line
-// message otherwise (and leaves `mesh` empty).
-inline std::string read_mesh(std::istream& in, const std::string& format, std::size_t byte_count, Mesh& mesh)
+// message otherwise (and leaves `mesh` empty). What was read but not used
+// (OFF lines after the announced faces, STL triangles with two equal corners)
+// is described in `warnings`, if given.
+inline std::string read_mesh(std::istream& in, const std::string& format, std::size_t byte_count, Mesh& mesh,
+                             std::vector<std::string>* warnings = nullptr)
 {
   mesh.clear();
   std::string problem;
   try
   {
-    const auto np = CGAL::parameters::verbose(false);
     if(format == "off")
-      problem = read_off(in, byte_count, mesh);
+      problem = read_off(in, byte_count, mesh, warnings);
     else if(format == "obj" || format == "ply" || format == "stl")
     {
-      const bool ok = format == "obj"   ? CGAL::IO::read_OBJ(in, mesh, np)
-                      : format == "ply" ? CGAL::IO::read_PLY(in, mesh, np)
-                                        : CGAL::IO::read_STL(in, mesh, np);
-      if(!ok)
-        problem = "unreadable, truncated or malformed " + format + " data (or not a manifold surface)";
+      Soup soup;
+      std::size_t dropped = 0;
+      problem = format == "obj"   ? read_obj_soup(in, byte_count, soup)
+                : format == "ply" ? read_ply_soup(in, byte_count, soup)
+                                  : read_stl_soup(in, byte_count, soup, dropped);
+      if(problem.empty())
+        problem = soup_to_mesh(soup, mesh);
+      if(problem.empty() && dropped > 0 && warnings)
+        warnings->push_back(std::to_string(dropped) + " STL triangle" + (dropped > 1 ? "s" : "") +
+                            " with two equal corners dropped");
     }
     else
       problem = "unknown file format '" + format + "' (OFF, OBJ, PLY and STL are read)";
@@ -222,14 +261,14 @@ inline std::string read_mesh(std::istream& in, const std::string& format, std::s
   return problem;
 }
 
-inline std::string read_mesh_file(const std::string& path, Mesh& mesh)
+inline std::string read_mesh_file(const std::string& path, Mesh& mesh, std::vector<std::string>* warnings = nullptr)
 {
   std::ifstream in(path, std::ios::binary);
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if(!in || ec)
     return "cannot open '" + path + "'";
-  const std::string problem = read_mesh(in, extension(path), std::size_t(size), mesh);
+  const std::string problem = read_mesh(in, extension(path), std::size_t(size), mesh, warnings);
   return problem.empty() ? problem : "'" + path + "': " + problem;
 }
 

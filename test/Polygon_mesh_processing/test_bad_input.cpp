@@ -20,8 +20,11 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -29,6 +32,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -685,6 +689,208 @@ BAD_INPUT_CASE(MalformedOffDataIsRejectedWithAOneLineMessage)
   REQUIRE(read_off_text("OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n", split)
               .empty());
   REQUIRE(num_faces(split) == 3);
+  return "";
+}
+
+namespace {
+
+std::string read_text(const std::string& text, const char* format, Mesh& m,
+                      std::vector<std::string>* warnings = nullptr)
+{
+  std::istringstream in(text);
+  return denoise_file::read_mesh(in, format, text.size(), m, warnings);
+}
+
+// Each of `bad` in `format`: a one-line message, no mesh; returns "" or what
+// went wrong.
+std::string check_rejected(const char* format, const std::vector<std::string>& bad)
+{
+  for(const std::string& text : bad)
+  {
+    Mesh m;
+    const std::string message = read_text(text, format, m);
+    if(message.empty())
+      return std::string("accepted (") + format + "): " + text;
+    if(message.find('\n') != std::string::npos)
+      return "message on several lines: " + message;
+    if(!m.is_empty())
+      return std::string("mesh left non-empty for (") + format + "): " + text;
+  }
+  return "";
+}
+
+// Little-endian binary helpers for the binary PLY and STL cases.
+void put_u32(std::string& s, std::uint32_t v)
+{
+  for(int i = 0; i < 4; ++i)
+    s.push_back(char((v >> (8 * i)) & 0xff));
+}
+void put_f32(std::string& s, float f)
+{
+  std::uint32_t v;
+  std::memcpy(&v, &f, 4);
+  put_u32(s, v);
+}
+// A binary STL of `triangles` (9 coordinates each), announcing `announced`.
+std::string binary_stl(const std::vector<std::array<float, 9>>& triangles, std::uint32_t announced)
+{
+  std::string s(80, ' ');
+  put_u32(s, announced);
+  for(const auto& t : triangles)
+  {
+    for(int k = 0; k < 3; ++k)
+      put_f32(s, 0.f);
+    for(float c : t)
+      put_f32(s, c);
+    s.push_back('\0');
+    s.push_back('\0');
+  }
+  return s;
+}
+
+const char* const ply_header_ascii = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                     "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                     "end_header\n";
+
+} // namespace
+
+// OBJ, PLY and STL: every count bounded by the data, finite coordinates,
+// indices in range; a one-line message naming the line or element, no mesh.
+BAD_INPUT_CASE(MalformedObjPlyStlDataIsRejectedWithAOneLineMessage)
+{
+  const float nan = std::nanf("");
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  REQUIRE(check_rejected("obj", {"", "garbage\x7f\x01", tri,                 // no face
+                                 "v 0 0 0\nv 1 0 0\nf 1 2 3\n",              // truncated (index 3 missing)
+                                 tri + "f 1 2 7\n",                          // out of range
+                                 tri + "f 1 2 -9\n",                         // before the first vertex
+                                 tri + "f 1 2 0\n",                          // zero index
+                                 tri + "f 1 2 x\n",                          // not a number
+                                 "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n",   // NaN
+                                 "v 0 0 0\nv 1 inf 0\nv 0 1 0\nf 1 2 3\n",   // infinite
+                                 "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",       // two coordinates
+                                 tri + "f 1 2\n",                            // two vertices
+                                 tri + "f 1 2 99999999999999999999999\n",    // huge index
+                                 tri + "f 1 1 2\n"})                         // a vertex twice
+              .empty());
+  const std::string ply_body = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  REQUIRE(check_rejected("ply", {"", "ply\n", std::string("ply\nformat ascii 1.0\n") + "element vertex 3\n",
+                                 std::string(ply_header_ascii) + "0 0 0\n1 0 0\n",                  // truncated
+                                 std::string(ply_header_ascii) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",  // out of range
+                                 std::string(ply_header_ascii) + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n",  // NaN
+                                 std::string(ply_header_ascii) + "0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n", // not a number
+                                 std::string(ply_header_ascii) + "0 0 0\n1 0 0\n0 1 0\n200 0 1 2\n",  // huge list
+                                 std::string("ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\n"
+                                             "property float y\nproperty float z\nend_header\n0 0 0\n"), // huge count
+                                 std::string("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                             "property float y\nend_header\n") + ply_body, // no z
+                                 std::string("ply\nformat ebcdic 1.0\nend_header\n"),         // unknown format
+                                 std::string("ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+                                             "property float x\nproperty float y\nproperty float z\n"
+                                             "end_header\n\x01\x02")}) // truncated binary
+              .empty());
+  const std::vector<std::array<float, 9>> one = {{0, 0, 0, 1, 0, 0, 0, 1, 0}};
+  REQUIRE(check_rejected("stl", {"", "garbage bytes, neither ascii nor binary",
+                                 binary_stl(one, 2) + std::string(10, '\0'),       // announces 2, holds 1.2
+                                 binary_stl({{0, 0, 0, 1, 0, 0, 0, nan, 0}}, 1),   // NaN
+                                 "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n", // truncated
+                                 "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\n"
+                                 "endfacet\nendsolid x\n",                                             // two vertices
+                                 "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 inf 0\n"
+                                 "vertex 0 1 0\nendloop\nendfacet\nendsolid x\n"})                   // infinite
+              .empty());
+  // the messages name where: a line, an element, a triangle
+  Mesh m;
+  REQUIRE(contains(read_text(tri + "f 1 2 7\n", "obj", m), "line 4"));
+  REQUIRE(contains(read_text(std::string(ply_header_ascii) + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", "ply", m),
+                   "vertex 1"));
+  REQUIRE(contains(read_text(binary_stl({{0, 0, 0, 1, 0, 0, 0, nan, 0}}, 1), "stl", m), "triangle 0"));
+  return "";
+}
+
+// The same triangle pair in every format, ASCII and binary: the same mesh.
+BAD_INPUT_CASE(ObjPlyStlReadTheSameMesh)
+{
+  // a square of two triangles: 4 vertices, 2 faces
+  const std::vector<std::array<float, 3>> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const int t[2][3] = {{0, 1, 2}, {0, 2, 3}};
+  std::string obj = "# square\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf -4 -2 -1\n";
+  std::string ply_ascii = "ply\nformat ascii 1.0\ncomment square\nelement vertex 4\nproperty float x\n"
+                          "property float y\nproperty float z\nproperty uchar red\nelement face 2\n"
+                          "property list uchar int vertex_indices\nend_header\n"
+                          "0 0 0 9\n1 0 0 9\n1 1 0 9\n0 1 0 9\n3 0 1 2\n3 0 2 3\n";
+  std::string ply_big = "ply\nformat binary_big_endian 1.0\nelement vertex 4\nproperty double x\n"
+                        "property double y\nproperty double z\nelement face 2\n"
+                        "property list uchar uint vertex_indices\nend_header\n";
+  for(const auto& q : p)
+    for(float c : q)
+    {
+      double d = c;
+      unsigned char b[8];
+      std::memcpy(b, &d, 8);
+      for(int i = 7; i >= 0; --i) // this test runs on little-endian machines
+        ply_big.push_back(char(b[i]));
+    }
+  for(const auto& f : t)
+  {
+    ply_big.push_back(char(3));
+    for(int v : f)
+      for(int i = 3; i >= 0; --i)
+        ply_big.push_back(char((std::uint32_t(v) >> (8 * i)) & 0xff));
+  }
+  std::vector<std::array<float, 9>> triangles;
+  std::string stl_ascii = "solid square\n";
+  for(const auto& f : t)
+  {
+    std::array<float, 9> tr;
+    stl_ascii += "facet normal 0 0 1\nouter loop\n";
+    for(int c = 0; c < 3; ++c)
+    {
+      stl_ascii += "vertex " + std::to_string(p[f[c]][0]) + " " + std::to_string(p[f[c]][1]) + " " +
+                   std::to_string(p[f[c]][2]) + "\n";
+      for(int k = 0; k < 3; ++k)
+        tr[3 * c + k] = p[f[c]][k];
+    }
+    stl_ascii += "endloop\nendfacet\n";
+    triangles.push_back(tr);
+  }
+  stl_ascii += "endsolid square\n";
+  // a degenerate triangle is dropped, with a warning
+  triangles.push_back({0, 0, 0, 0, 0, 0, 1, 1, 0});
+  const std::string stl_binary = binary_stl(triangles, 3);
+  const std::pair<const char*, std::string> files[] = {{"obj", obj},         {"ply", ply_ascii},
+                                                       {"ply", ply_big},     {"stl", stl_ascii},
+                                                       {"stl", stl_binary}};
+  for(const auto& file : files)
+  {
+    Mesh m;
+    std::vector<std::string> warnings;
+    const std::string problem = read_text(file.second, file.first, m, &warnings);
+    if(!problem.empty())
+      return std::string(file.first) + ": " + problem;
+    REQUIRE(num_vertices(m) == 4);
+    REQUIRE(num_faces(m) == 2);
+    double area = 0.;
+    for(auto f : m.faces())
+      area += std::sqrt(CGAL::squared_area(m.point(source(halfedge(f, m), m)), m.point(target(halfedge(f, m), m)),
+                                           m.point(target(next(halfedge(f, m), m), m))));
+    REQUIRE(std::abs(area - 1.) < 1e-12);
+    REQUIRE(warnings.size() == (file.second == stl_binary ? 1u : 0u));
+  }
+  return "";
+}
+
+// OFF with more face lines than its header says: read as the header says,
+// with a warning naming the count.
+BAD_INPUT_CASE(OffTrailingFacesAreCountedInAWarning)
+{
+  Mesh m;
+  std::vector<std::string> warnings;
+  REQUIRE(read_text("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n# end\n", "off", m, &warnings)
+              .empty());
+  REQUIRE(num_faces(m) == 1);
+  REQUIRE(warnings.size() == 1);
+  REQUIRE(contains(warnings[0], "1 line after the 1 faces"));
   return "";
 }
 

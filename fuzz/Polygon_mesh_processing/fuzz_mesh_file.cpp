@@ -1,5 +1,6 @@
-// libFuzzer harness: the bytes are an OFF file given to the command-line
-// program's path (examples/Polygon_mesh_processing/denoise_mesh_file.h):
+// libFuzzer harness: the bytes are a mesh file in the format FUZZ_FORMAT
+// ("off", "obj", "ply" or "stl": one executable each) given to the
+// command-line program's path (examples/Polygon_mesh_processing/denoise_mesh_file.h):
 // read and validate, then denoise. Documented outcomes only: a one-line
 // message for a bad file, or a denoised mesh with finite coordinates. Anything
 // else (a crash, a sanitizer report, an exception escaping, a NaN) is a bug.
@@ -14,12 +15,16 @@
 #include <sstream>
 #include <string>
 
+#ifndef FUZZ_FORMAT
+#define FUZZ_FORMAT "off"
+#endif
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
   const std::string bytes(reinterpret_cast<const char*>(data), size);
   std::istringstream in(bytes);
   denoise_file::Mesh mesh;
-  const std::string problem = denoise_file::read_mesh(in, "off", size, mesh);
+  const std::string problem = denoise_file::read_mesh(in, FUZZ_FORMAT, size, mesh);
   if(!problem.empty())
   {
     if(problem.find('\n') != std::string::npos || !mesh.is_empty())
