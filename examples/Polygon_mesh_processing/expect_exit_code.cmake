@@ -1,13 +1,16 @@
 # cmake -DEXE=program -DARGS="a|b" -DEXPECTED=code [-DEXPECT_OUTPUT=regex] [-DEXPECT_FILE=path]
-#       [-DEXPECT_STDERR=regex] [-DERROR_PREFIX=regex] [-DEXPECT_OUTPUT_SAME_AS=path]
+#       [-DEXPECT_NO_FILE=path] [-DEXPECT_STDERR=regex] [-DERROR_PREFIX=regex] [-DEXPECT_OUTPUT_SAME_AS=path]
 #       -P expect_exit_code.cmake
 # Runs EXE with ARGS and fails unless it exits with EXPECTED, its standard
 # error holds exactly one error line (ERROR_PREFIX, default "denoise: ...error: ")
 # when it fails, its standard output matches EXPECT_OUTPUT (and is the
 # content of the file EXPECT_OUTPUT_SAME_AS), its standard error
-# EXPECT_STDERR and EXPECT_FILE exists (when given).
+# EXPECT_STDERR, EXPECT_FILE exists and EXPECT_NO_FILE does not (when given).
 if(DEFINED EXPECT_FILE)
   file(REMOVE ${EXPECT_FILE})
+endif()
+if(DEFINED EXPECT_NO_FILE)
+  file(REMOVE ${EXPECT_NO_FILE})
 endif()
 string(REPLACE "|" ";" ARGS "${ARGS}") # arguments are separated by |
 execute_process(COMMAND ${EXE} ${ARGS} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -39,6 +42,9 @@ if(DEFINED EXPECT_STDERR AND NOT err MATCHES "${EXPECT_STDERR}")
 endif()
 if(DEFINED EXPECT_FILE AND NOT EXISTS ${EXPECT_FILE})
   message(FATAL_ERROR "${EXPECT_FILE} was not written")
+endif()
+if(DEFINED EXPECT_NO_FILE AND EXISTS ${EXPECT_NO_FILE})
+  message(FATAL_ERROR "${EXPECT_NO_FILE} was written")
 endif()
 # -DCHECK_EN_DECREASES=ON: the printed E_n of the result must be below the input's
 if(CHECK_EN_DECREASES)
