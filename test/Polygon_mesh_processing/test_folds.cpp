@@ -8,6 +8,7 @@
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 #include <CGAL/Polygon_mesh_processing/update_vertices_from_face_normals.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include "synthetic_meshes.h"
@@ -123,4 +124,39 @@ TEST(FoldSafeguard, NoFlippedFacesWithTheLeastSquaresUpdate)
   EXPECT_EQ(flipped_faces(noisy, fixed), 0u);
   EXPECT_EQ(flipped_faces(noisy, automatic), 0u);
   EXPECT_LT(PMP::face_normal_error(fixed, reference), PMP::face_normal_error(noisy, reference));
+}
+
+TEST(FoldSafeguard, MoveIsHalvedUntilTheFaceNoLongerFolds)
+{
+  // One triangle a = (0,0,0), b = (1,0,0), c = (0,1,0) (normal +z); c is
+  // moved by (0,-3,0). The full move folds it (c at y = -2), half the move
+  // folds it (y = -0.5), a quarter does not (y = 0.25): c ends at
+  // p + move / 4, the moves of the face's three vertices halved twice, none
+  // cancelled.
+  namespace D = PMP::internal::Denoising;
+  D::Flat_mesh m;
+  m.points = {{0., 0., 0.}, {1., 0., 0.}, {0., 1., 0.}};
+  m.triangles = {{0u, 1u, 2u}};
+  m.vertex_face_offsets = {0u, 1u, 2u, 3u};
+  m.vertex_faces = {0u, 0u, 0u};
+  const std::vector<D::Vec3> up = {{0., 0., 1.}};
+  std::vector<D::Vec3> next = m.points;
+  next[2] = {0., -2., 0.};
+  D::Fold_safeguard guard;
+  guard.reference = &up;
+  D::apply_fold_safeguard<CGAL::Sequential_tag>(m, m.points, next, up, guard);
+  EXPECT_EQ(next[2][0], 0.);
+  EXPECT_EQ(next[2][1], 0.25);
+  EXPECT_EQ(next[2][2], 0.);
+  EXPECT_EQ(guard.halved_moves, 3u);
+  EXPECT_EQ(guard.frozen_moves, 0u);
+  // with a move that still folds after 4 halvings (y = 1 - 48 / 16 = -2),
+  // the vertices stay
+  next = m.points;
+  next[2] = {0., -47., 0.};
+  guard.halved_moves = guard.frozen_moves = 0;
+  D::apply_fold_safeguard<CGAL::Sequential_tag>(m, m.points, next, up, guard);
+  EXPECT_EQ(next[2][1], 1.);
+  EXPECT_EQ(guard.frozen_moves, 3u);
+  EXPECT_EQ(guard.halved_moves, 0u);
 }

@@ -119,6 +119,20 @@ TEST(SquarePattern, SixRegionsBySignsOfArealCoordinates)
   EXPECT_EQ(seen.size(), 6u);
 }
 
+TEST(SquarePattern, EachSignPatternHasItsRegion)
+{
+  // the regions run around the triangle in order: beyond the edge opposite
+  // vertex 0, beyond vertex 2, beyond the edge opposite vertex 1, beyond
+  // vertex 0, beyond the edge opposite vertex 2, beyond vertex 1 (the trees
+  // list their nodes region after region in this order)
+  EXPECT_EQ(D::areal_region(-1, 1, 1), 0);  // (-,+,+)
+  EXPECT_EQ(D::areal_region(-1, -1, 3), 1); // (-,-,+)
+  EXPECT_EQ(D::areal_region(1, -1, 1), 2);  // (+,-,+)
+  EXPECT_EQ(D::areal_region(3, -1, -1), 3); // (+,-,-)
+  EXPECT_EQ(D::areal_region(1, 1, -1), 4);  // (+,+,-)
+  EXPECT_EQ(D::areal_region(-1, 3, -1), 5); // (-,+,-)
+}
+
 // Face 0 is the triangle (0,0,0), (1,0,0), (0,1,0); faces 1.. are tiny
 // triangles around chosen centroids (the neighbourhood is given by hand).
 struct Hand_built

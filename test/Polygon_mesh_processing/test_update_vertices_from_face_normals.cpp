@@ -110,6 +110,42 @@ TEST(UpdateVertices, NonFiniteNormalThrowsAndMeshIsUnchanged)
   EXPECT_EQ(mesh.point(v), p);
 }
 
+TEST(UpdateVertices, OneStepAtAVertexWithSeveralFacesMatchesEquation10)
+{
+  // a fan of four faces around a raised centre vertex; targets tilted
+  // differently per face: the centre moves by
+  //   1/4 sum_j n_j (n_j . (c_j - v)),
+  // the mean, not the sum, of its faces' corrections (all computed from the
+  // positions before the step)
+  Mesh mesh;
+  const K::Point_3 centre_at(0.1, -0.05, 0.3);
+  auto centre = mesh.add_vertex(centre_at);
+  const K::Point_3 rim_at[4] = {{1, 0, 0}, {0, 1, 0.1}, {-1, 0, 0}, {0, -1, -0.1}};
+  Mesh::Vertex_index rim[4];
+  for(int k = 0; k < 4; ++k)
+    rim[k] = mesh.add_vertex(rim_at[k]);
+  Mesh::Face_index f[4];
+  for(int k = 0; k < 4; ++k)
+    f[k] = mesh.add_face(centre, rim[k], rim[(k + 1) % 4]);
+  const K::Vector_3 target[4] = {{0.1, 0, 1}, {0, 0.2, 1}, {-0.1, 0.1, 1}, {0.05, -0.2, 1}};
+  auto fnm = mesh.add_property_map<Mesh::Face_index, K::Vector_3>("f:n", K::Vector_3(0, 0, 1)).first;
+  K::Vector_3 move = CGAL::NULL_VECTOR;
+  for(int k = 0; k < 4; ++k)
+  {
+    put(fnm, f[k], target[k]);
+    const K::Vector_3 n = target[k] / std::sqrt(target[k].squared_length());
+    const K::Point_3 c = CGAL::centroid(centre_at, rim_at[k], rim_at[(k + 1) % 4]);
+    move = move + (n * (c - centre_at)) * n;
+  }
+  const K::Point_3 expected = centre_at + move / 4.;
+  PMP::update_vertices_from_face_normals(mesh, fnm, CGAL::parameters::vertex_iterations(1).prevent_folds(false));
+  EXPECT_NEAR(mesh.point(centre).x(), expected.x(), 1e-15);
+  EXPECT_NEAR(mesh.point(centre).y(), expected.y(), 1e-15);
+  EXPECT_NEAR(mesh.point(centre).z(), expected.z(), 1e-15);
+  // the sum instead of the mean would be 4 times as far
+  EXPECT_GT(std::sqrt(move.squared_length()), 1e-3);
+}
+
 // ---- Vertex_update::LEAST_SQUARES ------------------------------------------
 
 namespace {
