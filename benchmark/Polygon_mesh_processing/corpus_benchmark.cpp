@@ -189,17 +189,21 @@ void make_noisy(const Input& in, Mesh& reference, Mesh& noisy)
 const char* const classic_names[] = {"FDC03", "JDD03", "SRML07", "ZFAT11", "HS13", "ZDZ15"};
 constexpr std::size_t n_classic = 6;
 
+// The six classic methods at their defaults, in the order of classic_names.
+std::vector<std::function<void(Mesh&)>> classic_methods()
+{
+  return {[](Mesh& m) { PMP::bilateral_mesh_denoising<Tag>(m); },
+          [](Mesh& m) { PMP::non_iterative_denoising<Tag>(m); },
+          [](Mesh& m) { PMP::fast_feature_preserving_denoising<Tag>(m); },
+          [](Mesh& m) { PMP::bilateral_normal_denoising<Tag>(m); },
+          [](Mesh& m) { PMP::l0_denoising<Tag>(m); },
+          [](Mesh& m) { PMP::guided_normal_denoising<Tag>(m); }};
+}
+
 std::vector<double> classic_errors(const Mesh& noisy, const Mesh& reference)
 {
-  const std::vector<std::function<void(Mesh&)>> methods = {
-      [](Mesh& m) { PMP::bilateral_mesh_denoising<Tag>(m); },
-      [](Mesh& m) { PMP::non_iterative_denoising<Tag>(m); },
-      [](Mesh& m) { PMP::fast_feature_preserving_denoising<Tag>(m); },
-      [](Mesh& m) { PMP::bilateral_normal_denoising<Tag>(m); },
-      [](Mesh& m) { PMP::l0_denoising<Tag>(m); },
-      [](Mesh& m) { PMP::guided_normal_denoising<Tag>(m); }};
   std::vector<double> errors;
-  for(const auto& method : methods)
+  for(const auto& method : classic_methods())
   {
     Mesh m = noisy;
     method(m);
@@ -604,16 +608,9 @@ void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool 
         }
       }
       o.push_back(best_smooth);
-      const std::vector<std::function<void(Mesh&)>> classics = {
-          [](Mesh& m) { PMP::bilateral_mesh_denoising<Tag>(m); },
-          [](Mesh& m) { PMP::non_iterative_denoising<Tag>(m); },
-          [](Mesh& m) { PMP::fast_feature_preserving_denoising<Tag>(m); },
-          [](Mesh& m) { PMP::bilateral_normal_denoising<Tag>(m); },
-          [](Mesh& m) { PMP::l0_denoising<Tag>(m); },
-          [](Mesh& m) { PMP::guided_normal_denoising<Tag>(m); }};
       Outcome best_classic;
       best_classic.En = 1e300;
-      for(const auto& c : classics)
+      for(const auto& c : classic_methods())
         if(baselines)
       {
         const Outcome r = outcome(noisy, reference, c);
@@ -621,9 +618,15 @@ void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool 
           best_classic = r;
       }
       o.push_back(best_classic);
-      std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f (%gL^2) | %.2f | %zu, %zu | %.2f, %.2f, %.2f |\n",
-                  in.name().c_str(), noisy_En, o[0].En, o[1].En, o[2].En, o[3].En, o[4].En, best_time, o[5].En,
-                  o[1].turned, o[3].turned, o[0].seconds, o[1].seconds, o[3].seconds);
+      char smooth[64] = "-", classic[32] = "-";
+      if(baselines)
+      {
+        std::snprintf(smooth, sizeof smooth, "%.2f (%gL^2)", o[4].En, best_time);
+        std::snprintf(classic, sizeof classic, "%.2f", o[5].En);
+      }
+      std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %s | %s | %zu, %zu | %.2f, %.2f, %.2f |\n",
+                  in.name().c_str(), noisy_En, o[0].En, o[1].En, o[2].En, o[3].En, smooth, classic, o[1].turned,
+                  o[3].turned, o[0].seconds, o[1].seconds, o[3].seconds);
       std::fflush(stdout);
       if(results)
       {
