@@ -5,6 +5,9 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
+#include <CGAL/Polygon_mesh_processing/bilateral_normal_denoising.h>
+#include <CGAL/Polygon_mesh_processing/fast_feature_preserving_denoising.h>
+#include <CGAL/Polygon_mesh_processing/guided_normal_denoising.h>
 #include <CGAL/Polygon_mesh_processing/update_vertices_from_face_normals.h>
 
 #include "synthetic_meshes.h"
@@ -14,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <utility>
 
@@ -299,4 +303,47 @@ TEST(UpdateVerticesLeastSquares, SameResultForAnyThreadCount)
   PMP::update_vertices_from_face_normals<CGAL::Parallel_if_available_tag>(par, map, np);
   for(auto v : vertices(seq))
     ASSERT_EQ(seq.point(v), par.point(v));
+}
+
+TEST(UpdateVerticesLeastSquares, ClassicNormalFiltersTakeTheSameParameter)
+{
+  // SRML07, ZFAT11 and ZDZ15 with vertex_update(LEAST_SQUARES): a different
+  // result from eq. 10's, finite, and closer to the clean cube than the noisy
+  // input (mean angle to the clean normals)
+  const Mesh clean = denoising_test::cube<Mesh>(8);
+  const Mesh noisy = noisy_copy(clean, 0.2);
+  const auto target = clean_normals(clean);
+  const double e_noisy = mean_angle_to(noisy, target);
+  const auto ls = CGAL::parameters::vertex_update(PMP::Vertex_update::LEAST_SQUARES);
+  const std::vector<std::pair<const char*, std::function<void(Mesh&, bool)>>> methods = {
+      {"SRML07",
+       [&](Mesh& m, bool global) {
+         global ? PMP::fast_feature_preserving_denoising(m, ls) : PMP::fast_feature_preserving_denoising(m);
+       }},
+      {"ZFAT11",
+       [&](Mesh& m, bool global) {
+         global ? PMP::bilateral_normal_denoising(m, ls) : PMP::bilateral_normal_denoising(m);
+       }},
+      {"ZDZ15", [&](Mesh& m, bool global) {
+         global ? PMP::guided_normal_denoising(m, ls) : PMP::guided_normal_denoising(m);
+       }}};
+  for(const auto& method : methods)
+  {
+    Mesh paper = noisy, global = noisy;
+    method.second(paper, false);
+    method.second(global, true);
+    bool differs = false, finite = true;
+    for(auto v : vertices(global))
+    {
+      differs = differs || global.point(v) != paper.point(v);
+      finite = finite && std::isfinite(global.point(v).x()) && std::isfinite(global.point(v).y()) &&
+               std::isfinite(global.point(v).z());
+    }
+    const double e_paper = mean_angle_to(paper, target), e_global = mean_angle_to(global, target);
+    std::printf("%s: noisy %.3f, eq. 10 %.3f, least squares %.3f degrees\n", method.first, e_noisy, e_paper,
+                e_global);
+    EXPECT_TRUE(differs) << method.first;
+    EXPECT_TRUE(finite) << method.first;
+    EXPECT_LT(e_global, e_noisy) << method.first;
+  }
 }

@@ -65,6 +65,12 @@ namespace Polygon_mesh_processing
       \cgalParamType{unsigned int}
       \cgalParamDefault{`10`}
     \cgalParamNEnd
+    \cgalParamNBegin{vertex_update}
+      \cgalParamDescription{`Vertex_update::PAPER` (eq. 10) or `Vertex_update::LEAST_SQUARES` (each step a global
+                            one, see `update_vertices_from_face_normals()`)}
+      \cgalParamType{`CGAL::Polygon_mesh_processing::Vertex_update`}
+      \cgalParamDefault{`Vertex_update::PAPER`}
+    \cgalParamNEnd
     \cgalParamNBegin{neighbor_radius, relative_neighbor_radius}
       \cgalParamDescription{if one is given, \f$N_i\f$ is the geometric neighbourhood of that radius (absolute, or in
   multiples of \f$d\f$) instead of the faces sharing a vertex} \cgalParamType{double} \cgalParamDefault{unused}
@@ -111,7 +117,9 @@ void bilateral_normal_denoising(TriangleMesh &tmesh, const NamedParameters &np =
   auto filter = [&](const D::Face_data &fd, std::vector<D::Vec3> &out)
   { D::bilateral_normal_pass<ConcurrencyTag>(direct, fd, fd.normals, sigma_s, sigma_r, out); };
   const std::vector<D::Vec3> filtered =
-      D::normal_filtering_scheme<ConcurrencyTag>(mesh, fixed, iterations, vertex_iterations, filter);
+      D::normal_filtering_scheme<ConcurrencyTag>(
+          mesh, fixed, iterations, vertex_iterations, filter,
+          choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER));
   D::write_normal_filtering_result(tmesh, np, maps, mesh, filtered);
 }
 

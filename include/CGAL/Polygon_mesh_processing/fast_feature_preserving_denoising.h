@@ -61,6 +61,12 @@ namespace Polygon_mesh_processing
       \cgalParamType{unsigned int}
       \cgalParamDefault{`10`}
     \cgalParamNEnd
+    \cgalParamNBegin{vertex_update}
+      \cgalParamDescription{`Vertex_update::PAPER` (eq. 10) or `Vertex_update::LEAST_SQUARES` (each step a global
+                            one, see `update_vertices_from_face_normals()`)}
+      \cgalParamType{`CGAL::Polygon_mesh_processing::Vertex_update`}
+      \cgalParamDefault{`Vertex_update::PAPER`}
+    \cgalParamNEnd
     \cgalParamNBegin{face_normal_map}
       \cgalParamDescription{if given, receives the filtered normals of the last pass}
       \cgalParamType{a model of `WritablePropertyMap` with face descriptors as keys and `GeomTraits::Vector_3` as
@@ -121,7 +127,9 @@ void fast_feature_preserving_denoising(TriangleMesh &tmesh, const NamedParameter
                                       });
   };
   const std::vector<D::Vec3> filtered =
-      D::normal_filtering_scheme<ConcurrencyTag>(mesh, fixed, iterations, vertex_iterations, filter);
+      D::normal_filtering_scheme<ConcurrencyTag>(
+          mesh, fixed, iterations, vertex_iterations, filter,
+          choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER));
   D::write_normal_filtering_result(tmesh, np, maps, mesh, filtered);
 }
 

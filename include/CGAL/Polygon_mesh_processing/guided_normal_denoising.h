@@ -142,6 +142,12 @@ void guidance_normals(const Csr &ring, const Csr &edge_neighbors, const Face_dat
       \cgalParamType{unsigned int}
       \cgalParamDefault{`10`}
     \cgalParamNEnd
+    \cgalParamNBegin{vertex_update}
+      \cgalParamDescription{`Vertex_update::PAPER` (eq. 10) or `Vertex_update::LEAST_SQUARES` (each step a global
+                            one, see `update_vertices_from_face_normals()`)}
+      \cgalParamType{`CGAL::Polygon_mesh_processing::Vertex_update`}
+      \cgalParamDefault{`Vertex_update::PAPER`}
+    \cgalParamNEnd
     \cgalParamNBegin{face_normal_map, vertex_is_constrained_map, vertex_point_map, vertex_index_map, face_index_map,
   geom_traits} \cgalParamDescription{as for `fast_feature_preserving_denoising()`} \cgalParamNEnd \cgalNamedParamsEnd
 
@@ -187,7 +193,9 @@ void guided_normal_denoising(TriangleMesh &tmesh, const NamedParameters &np = pa
     D::bilateral_normal_pass<ConcurrencyTag>(direct, fd, guidance, sigma_s, sigma_r, out);
   };
   const std::vector<D::Vec3> filtered =
-      D::normal_filtering_scheme<ConcurrencyTag>(mesh, fixed, iterations, vertex_iterations, filter);
+      D::normal_filtering_scheme<ConcurrencyTag>(
+          mesh, fixed, iterations, vertex_iterations, filter,
+          choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER));
   D::write_normal_filtering_result(tmesh, np, maps, mesh, filtered);
 }
 

@@ -100,19 +100,23 @@ inline Csr vertex_face_neighborhoods(const Flat_mesh &m, const std::vector<Vec3>
 // The scheme of the normal-filtering denoisers: `iterations` times, the face
 // normals of the current mesh are filtered by `filter(current_face_data,
 // filtered_normals)` and the vertices follow them by `vertex_iterations` steps
-// of eq. 10. Works on `mesh.points`; writes nothing to the user's mesh.
-// Returns the filtered normals of the last pass (empty if no pass).
+// of eq. 10, or of the least-squares update (`update`). Works on
+// `mesh.points`; writes nothing to the user's mesh. Returns the filtered
+// normals of the last pass (empty if no pass).
 template <typename ConcurrencyTag, typename Filter>
 std::vector<Vec3> normal_filtering_scheme(Flat_mesh &mesh, const std::vector<char> &fixed, unsigned int iterations,
-                                          unsigned int vertex_iterations, Filter &filter)
+                                          unsigned int vertex_iterations, Filter &filter,
+                                          Vertex_update update = Vertex_update::PAPER)
 {
   Face_data current;
   std::vector<Vec3> filtered, centroids, next;
+  Least_squares_recovery recovery = make_vertex_recovery(update);
   for(unsigned int it = 0; it < iterations; ++it)
   {
     compute_face_data<ConcurrencyTag>(mesh, mesh.points, current);
     filter(current, filtered);
-    update_vertices<ConcurrencyTag>(mesh, mesh.points, filtered, fixed, vertex_iterations, centroids, next);
+    update_vertices<ConcurrencyTag>(mesh, mesh.points, filtered, fixed, vertex_iterations, centroids, next, nullptr,
+                                    &recovery);
   }
   return filtered;
 }
