@@ -19,7 +19,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <istream>
-#include <iterator>
 #include <map>
 #include <string>
 #include <utility>
@@ -39,12 +38,10 @@ namespace readers {
 // At most `limit` bytes of `in`; `truncated` tells whether there were more.
 inline std::string read_all(std::istream& in, std::size_t limit, bool& truncated)
 {
-  std::string data;
-  data.reserve(limit);
-  std::istreambuf_iterator<char> it(in), end;
-  for(; it != end && data.size() < limit; ++it)
-    data.push_back(*it);
-  truncated = it != end;
+  std::string data(limit, '\0');
+  in.read(&data[0], std::streamsize(limit));
+  data.resize(std::size_t(in.gcount()));
+  truncated = in.peek() != std::char_traits<char>::eof();
   return data;
 }
 
