@@ -27,4 +27,13 @@ test -f /usr/include/CGAL_intrinsic_denoising/CGAL/Polygon_mesh_processing/intri
 cmake -S "$root/test/downstream" -B downstream > configure.log
 cmake --build downstream > build.log
 ./downstream/downstream "$root/build/cgal_data/data/meshes/fandisk.off"
+if ls "$root"/build/python/cgal_intrinsic_denoising*.so > /dev/null 2>&1; then
+  /usr/bin/python3 -c "
+import sys, cgal_intrinsic_denoising as dn
+assert dn.__file__.startswith('/usr/lib/python3/dist-packages/'), dn.__file__
+V, F = dn.read_mesh(sys.argv[1])
+W, report = dn.denoise(dn.add_gaussian_noise(V, F, 0.3, seed=1), F)
+print('python from the package: E_n', dn.face_normal_error(W, F, V))
+" "$root/build/cgal_data/data/meshes/fandisk.off"
+fi
 echo "Debian package $(basename "$deb"): installed with apt-get, denoise --help runs, downstream project built and run"

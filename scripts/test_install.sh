@@ -14,4 +14,14 @@ test -f "$work/prefix/include/CGAL_intrinsic_denoising/CGAL/Polygon_mesh_process
 cmake -S test/downstream -B "$work/downstream" -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log"
 cmake --build "$work/downstream" > "$work/build.log"
 "$work/downstream/downstream" "$root/build/cgal_data/data/meshes/fandisk.off"
+# the Python module, if built, denoises from the prefix too
+if ls build/python/cgal_intrinsic_denoising*.so > /dev/null 2>&1; then
+  PYTHONPATH="$work/prefix/lib/python3/dist-packages" /usr/bin/python3 -c "
+import sys, cgal_intrinsic_denoising as dn
+assert dn.__file__.startswith('$work/prefix'), dn.__file__
+V, F = dn.read_mesh(sys.argv[1])
+W, report = dn.denoise(dn.add_gaussian_noise(V, F, 0.3, seed=1), F)
+print('python from the prefix: E_n', dn.face_normal_error(W, F, V))
+" "$root/build/cgal_data/data/meshes/fandisk.off"
+fi
 echo "install: headers, package config and denoise under a fresh prefix; downstream project built and run"

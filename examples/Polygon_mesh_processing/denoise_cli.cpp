@@ -240,38 +240,6 @@ po::options_description make_options(Settings &s)
   return general;
 }
 
-// Writes `mesh` to `path` in the format of its extension, atomically (OFF
-// through denoise_mesh_file.h; other formats the same way: temporary file in
-// the same directory, then a rename), never over `protect`.
-std::string write_mesh(const std::string &path, const Mesh &mesh, const std::string &protect)
-{
-  const std::string ext = denoise_file::extension(path);
-  if(ext == "off")
-    return denoise_file::write_mesh_file(path, mesh, protect);
-  if(ext != "obj" && ext != "ply" && ext != "stl")
-    return "unknown output format '" + ext + "' (OFF, OBJ, PLY and STL are written)";
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if(!protect.empty() && fs::exists(path, ec) && fs::equivalent(path, protect, ec))
-    return "refusing to overwrite the input '" + protect + "'";
-  const std::string tmp = path + ".tmp" + std::to_string(static_cast<long>(::getpid())) + "." + ext;
-  bool ok = false;
-  try
-  {
-    ok = CGAL::IO::write_polygon_mesh(tmp, mesh, CGAL::parameters::stream_precision(17).verbose(false));
-  }
-  catch(const std::exception &)
-  {
-    ok = false;
-  }
-  if(!ok || std::rename(tmp.c_str(), path.c_str()) != 0)
-  {
-    std::remove(tmp.c_str());
-    return "cannot write '" + path + "'";
-  }
-  return std::string();
-}
-
 // A progress bar on stderr, redrawn in place with '\r' after each iteration:
 // `[#####.....] 12/100 iterations 0.8 s`. Drawn only if `enabled` (stderr is
 // a terminal, or --progress); finish() ends the line.
@@ -601,7 +569,7 @@ int main(int argc, char **argv)
     }
     if(!s.noisy_output.empty())
     {
-      problem = write_mesh(s.noisy_output, input, s.input);
+      problem = denoise_file::write_mesh(s.noisy_output, input, s.input);
       if(!problem.empty())
         return fail(exit_input, problem);
     }
@@ -683,7 +651,7 @@ int main(int argc, char **argv)
     }
   }
 
-  problem = write_mesh(s.output, denoised, s.input);
+  problem = denoise_file::write_mesh(s.output, denoised, s.input);
   if(!problem.empty())
     return fail(exit_input, problem);
   if(talk)

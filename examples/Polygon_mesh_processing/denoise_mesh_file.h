@@ -365,6 +365,38 @@ inline std::string write_mesh_file(const std::string& path, const Mesh& mesh, co
   return std::string();
 }
 
+// Writes `mesh` to `path` in the format of its extension (OFF, OBJ, PLY or
+// STL, 17 digits), atomically as write_mesh_file() does (temporary file in
+// the same directory, then a rename), never over `protect`.
+inline std::string write_mesh(const std::string &path, const Mesh &mesh, const std::string &protect = "")
+{
+  const std::string ext = extension(path);
+  if(ext == "off")
+    return write_mesh_file(path, mesh, protect);
+  if(ext != "obj" && ext != "ply" && ext != "stl")
+    return "unknown output format '" + ext + "' (OFF, OBJ, PLY and STL are written)";
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if(!protect.empty() && fs::exists(path, ec) && fs::equivalent(path, protect, ec))
+    return "refusing to overwrite the input '" + protect + "'";
+  const std::string tmp = path + ".tmp" + std::to_string(static_cast<long>(::getpid())) + "." + ext;
+  bool ok = false;
+  try
+  {
+    ok = CGAL::IO::write_polygon_mesh(tmp, mesh, CGAL::parameters::stream_precision(17).verbose(false));
+  }
+  catch(const std::exception &)
+  {
+    ok = false;
+  }
+  if(!ok || std::rename(tmp.c_str(), path.c_str()) != 0)
+  {
+    std::remove(tmp.c_str());
+    return "cannot write '" + path + "'";
+  }
+  return std::string();
+}
+
 } // namespace denoise_file
 
 #endif
