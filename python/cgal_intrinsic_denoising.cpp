@@ -375,6 +375,8 @@ py::dict report_dict(const PMP::Intrinsic_denoising_report &r)
   }
   d["candidates"] = candidates;
   d["chosen_candidate"] = r.chosen_candidate;
+  d["inlier_residual_correlation"] = r.inlier_residual_correlation;
+  d["outlier_vertices"] = r.outlier_vertices;
   return d;
 }
 

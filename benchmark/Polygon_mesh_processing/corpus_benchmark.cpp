@@ -791,8 +791,9 @@ int main(int argc, char** argv)
     row.fixed_En = PMP::face_normal_error(f, reference);
     row.fixed_Ev = PMP::vertex_position_error(f, reference);
     char chosen[128];
-    std::snprintf(chosen, sizeof chosen, "sigma %.2f r %.1fd k %u noise %.3f", rep.sigma_spatial,
-                  rep.relative_neighbor_radius, rep.iterations, rep.noise_level);
+    std::snprintf(chosen, sizeof chosen, "sigma %.2f r %.1fd k %u noise %.3f inlier corr %.3f outliers %zu",
+                  rep.sigma_spatial, rep.relative_neighbor_radius, rep.iterations, rep.noise_level,
+                  rep.inlier_residual_correlation, rep.outlier_vertices);
     row.chosen = chosen;
     const double best_classic = *std::min_element(row.ref.classic.begin(), row.ref.classic.end());
     std::printf("| %s%s | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.2f | %.2f | %.2f | %s |\n", in.name().c_str(),

@@ -99,8 +99,11 @@ DESCRIPTION
     edges, which is when it starts to remove shape rather than noise; among
     the flattest results (if at least 30% of their edges are flatter than 1
     degree) or else among all, the one whose residual is the least correlated
-    at a common residual size is kept. If some of sigma, r, k or the noise
-    level are given, the others follow the noise level of INPUT (estimated, or
+    at a common residual size is kept. If that result's residual shows sparse
+    noise (a few vertices far off, smooth residual at the others: impulsive
+    noise on exact vertices), INPUT is denoised again with the same setting,
+    only those vertices moving. If some of sigma, r, k or the noise level are
+    given, the others follow the noise level of INPUT (estimated, or
     given with --noise-level), and unless k is given the iterations stop when
     the vertices have moved by about the noise level or the filtered normals
     no longer change. Only the options given on the command line replace the

@@ -314,6 +314,12 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
           << ", residual RMS " << k.residual_rms << ", correlation " << k.residual_correlation << ", flat edges "
           << k.flat_share << ", score " << k.score << "\n";
     }
+    out << "noise kind: "
+        << (r.outlier_vertices > 0 ? "sparse: only the " + std::to_string(r.outlier_vertices) +
+                                         " outlier vertices were denoised"
+                                   : std::string("dense: every vertex denoised"))
+        << " (residual correlation " << r.inlier_residual_correlation
+        << " at the vertices within 3 robust deviations; sparse from 0.1)\n";
   }
   if(r.noise_level_estimated || r.noise_level > 0. || r.automatic_parameters)
     out << "noise level: " << r.noise_level << " x mean edge length ("

@@ -9,7 +9,9 @@
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/noise_estimate.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/sparse_noise.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -19,7 +21,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <limits>
+#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -450,4 +454,105 @@ TEST(AutomaticParameters, ResidualStatisticsByHand)
             D::correlation_at_rms(runs[0].trajectory, level) < D::correlation_at_rms(runs[1].trajectory, level) ? 0u
                                                                                                                 : 1u);
   EXPECT_EQ(runs[0].score, D::correlation_at_rms(runs[0].trajectory, level));
+}
+
+// The sparse-noise test by hand on a grid (20 x 20 cells, edge 0.05): the
+// result is the input less a smooth bump (a filter's bias on exact
+// vertices) and less spikes at a few vertices; the spikes, and only they,
+// are flagged, and the residual at the others is smooth. With noise of its
+// own at every vertex instead, the residual is rough and the noise dense.
+TEST(SparseNoise, SpikesOverASmoothResidualAreFlagged)
+{
+  const Mesh grid = denoising_test::plane_grid<Mesh>(20);
+  const D::Flat_mesh m = D::make_flat_mesh(grid, get(CGAL::vertex_point, grid), get(CGAL::vertex_index, grid),
+                                           get(CGAL::face_index, grid), "test");
+  const D::Csr adjacency = D::vertex_adjacency(m);
+  const std::size_t nv = m.number_of_vertices();
+  std::vector<D::Vec3> input = m.points, result = m.points, rough = m.points;
+  std::vector<char> spike(nv, 0), fixed(nv, 0);
+  std::size_t spikes = 0;
+  std::mt19937 generator(5);
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    const D::Vec3& p = m.points[v];
+    result[v][2] = -0.02 * std::sin(3.14159265358979 * p[0]) * std::sin(3.14159265358979 * p[1]);
+    // independent values in [-0.01, 0.01] (std::mt19937 is fully specified)
+    rough[v][2] = 0.01 * (double(generator() % 2001) / 1000. - 1.);
+    if(p[0] > 0.01 && p[0] < 0.99 && p[1] > 0.01 && p[1] < 0.99 && v % 17 == 0)
+    {
+      input[v][2] = 0.2;
+      spike[v] = 1;
+      ++spikes;
+    }
+  }
+  ASSERT_GT(spikes, 10u);
+  const D::Sparse_noise_test t = D::sparse_noise_test(m, adjacency, input, result, fixed);
+  EXPECT_TRUE(t.sparse);
+  EXPECT_EQ(t.outliers, spikes);
+  EXPECT_EQ(t.outlier, spike);
+  EXPECT_EQ(t.tested, nv);
+  EXPECT_GT(t.inlier_correlation, 0.8);
+
+  // a fixed vertex is neither tested nor flagged
+  std::size_t first_spike = 0;
+  while(!spike[first_spike])
+    ++first_spike;
+  fixed[first_spike] = 1;
+  const D::Sparse_noise_test held = D::sparse_noise_test(m, adjacency, input, result, fixed);
+  EXPECT_EQ(held.outliers, spikes - 1);
+  EXPECT_EQ(held.outlier[first_spike], 0);
+  EXPECT_EQ(held.tested, nv - 1);
+  fixed[first_spike] = 0;
+
+  // noise at every vertex: the residual at the vertices not flagged is rough
+  const D::Sparse_noise_test dense = D::sparse_noise_test(m, adjacency, input, rough, fixed);
+  EXPECT_FALSE(dense.sparse);
+  EXPECT_LT(dense.inlier_correlation, D::Sparse_noise_rules::min_inlier_correlation);
+
+  // no residual at all: nothing to read
+  const D::Sparse_noise_test none = D::sparse_noise_test(m, adjacency, input, input, fixed);
+  EXPECT_FALSE(none.sparse);
+  EXPECT_EQ(none.outliers, 0u);
+}
+
+// Impulsive noise on fandisk (10% of the vertices, sigma_E 1.0, seed 1): the
+// automatic mode takes it for sparse noise and moves only the vertices it
+// flags; every other vertex keeps its input position exactly, and the result
+// is better than the noisy input and than denoising every vertex with the
+// same setting. Gaussian noise on every vertex is not taken for sparse.
+TEST(SparseNoise, ImpulsiveNoiseMovesOnlyTheOutliers)
+{
+  Mesh noisy = fandisk();
+  PMP::add_impulsive_noise(noisy, 0.1, 1.0, CGAL::parameters::random_seed(1));
+  Mesh m = noisy;
+  const PMP::Intrinsic_denoising_report r = PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(m);
+  EXPECT_GT(r.outlier_vertices, 0u);
+  EXPECT_LT(r.outlier_vertices, num_vertices(m) / 5);
+  EXPECT_GE(r.inlier_residual_correlation, D::Sparse_noise_rules::min_inlier_correlation);
+  std::size_t moved = 0;
+  for(auto v : vertices(m))
+    moved += m.point(v) != noisy.point(v) ? 1 : 0;
+  EXPECT_GT(moved, 0u);
+  EXPECT_LE(moved, r.outlier_vertices);
+  const double noisy_error = PMP::face_normal_error(noisy, fandisk());
+  const double error = PMP::face_normal_error(m, fandisk());
+  // every vertex denoised with the setting kept
+  Mesh all = noisy;
+  PMP::intrinsic_denoising(all, CGAL::parameters::sigma_spatial(r.sigma_spatial)
+                                    .sigma_range(r.sigma_range)
+                                    .relative_neighbor_radius(r.relative_neighbor_radius)
+                                    .number_of_iterations(r.iterations));
+  const double all_error = PMP::face_normal_error(all, fandisk());
+  std::cout << "impulsive noise on fandisk: E_n noisy " << noisy_error << ", outliers only " << error
+            << ", every vertex " << all_error << " (" << r.outlier_vertices << " outliers, correlation "
+            << r.inlier_residual_correlation << ")\n";
+  EXPECT_LT(error, 0.5 * noisy_error);
+  EXPECT_LT(error, all_error);
+  EXPECT_LT(PMP::vertex_position_error(m, fandisk()), PMP::vertex_position_error(noisy, fandisk()));
+
+  Mesh gaussian = fandisk();
+  PMP::add_gaussian_noise(gaussian, 0.3, CGAL::parameters::random_seed(1));
+  const PMP::Intrinsic_denoising_report g = PMP::intrinsic_denoising(gaussian);
+  EXPECT_EQ(g.outlier_vertices, 0u);
+  EXPECT_LT(g.inlier_residual_correlation, D::Sparse_noise_rules::min_inlier_correlation);
 }

@@ -10,6 +10,7 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
 
@@ -99,6 +100,14 @@ struct Intrinsic_denoising_report
   /// with the stopping rule or the automatic selection: the RMS vertex
   /// displacement from the input at the end, relative to the mean edge length
   double displacement = 0.;
+  /// with the automatic selection: the correlation across edges of the kept
+  /// candidate's residual at the vertices it did not flag as outliers (the
+  /// sparse-noise test; 0 if not measured)
+  double inlier_residual_correlation = 0.;
+  /// with the automatic selection: the number of vertices taken for sparse
+  /// (impulsive) noise, which alone were then denoised, all others staying in
+  /// place; 0 if the noise was taken for dense (every vertex denoised)
+  std::size_t outlier_vertices = 0;
   /// the candidates of the automatic selection (empty if it did not run:
   /// see `intrinsic_denoising()` for when it does), in the order they ran
   std::vector<Intrinsic_candidate_report> candidates;
@@ -118,8 +127,8 @@ namespace Denoising {
 // keeps the one chosen, and describes all of them in `report`.
 template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters, typename Maps>
 Candidate_run select_automatically(const TriangleMesh& tmesh, const NamedParameters& np, const Maps& maps,
-                                   unsigned int vertex_iterations, Intrinsic_denoising_report& report,
-                                   const char* fname)
+                                   unsigned int vertex_iterations, Vertex_update vertex_update,
+                                   Intrinsic_denoising_report& report, const char* fname)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -128,7 +137,7 @@ Candidate_run select_automatically(const TriangleMesh& tmesh, const NamedParamet
   const auto progress = choose_parameter(get_parameter(np, internal_np::progress_callback), No_progress());
   Automatic_selection<ConcurrencyTag> selection(
       vertex_iterations, choose_parameter(get_parameter(np, internal_np::prevent_folds), true), keep_normals,
-      choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER));
+      vertex_update);
   const std::vector<char> constrained = maps.constrained(tmesh);
   constexpr std::size_t n = Selection_rules::number_of_candidates;
   for(std::size_t c = 0; c < n; ++c)
@@ -172,12 +181,35 @@ Candidate_run select_automatically(const TriangleMesh& tmesh, const NamedParamet
   report.relative_neighbor_radius = w.relative_neighbor_radius;
   report.neighbor_radius = w.relative_neighbor_radius * selection.centroid_distance();
   report.vertex_iterations = vertex_iterations;
-  report.vertex_update = selection.least_squares_update() ? Vertex_update::LEAST_SQUARES : Vertex_update::PAPER;
+  report.vertex_update = vertex_update;
   report.maximum_iterations = Selection_rules::max_iterations;
   report.iterations = w.iterations;
   report.stop_reason =
       w.stopped_by_correlation ? Intrinsic_stop_reason::RESIDUAL_CORRELATED : Intrinsic_stop_reason::ITERATION_LIMIT;
-  return std::move(runs[best]);
+
+  // Sparse noise (sparse_noise.h): if the kept result's residual says that
+  // only a few vertices were noisy, those alone are denoised, from the input,
+  // with the kept kernel, radius and number of iterations.
+  if(runs[best].iterations == 0)
+    return std::move(runs[best]);
+  const Sparse_noise_test test = selection.test_sparse_noise(runs[best]);
+  report.inlier_residual_correlation = test.inlier_correlation;
+  if(!test.sparse)
+    return std::move(runs[best]);
+  const Selection_rules::Candidate& kept = Selection_rules::candidates[best];
+  if(kept.relative_radius != Selection_rules::candidates[n - 1].relative_radius)
+  {
+    Setup_defaults defaults; // the paths of the kept candidate's radius
+    defaults.sigma_spatial = defaults.sigma_range = kept.sigma;
+    defaults.relative_radius = kept.relative_radius;
+    selection.setup_paths(make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname,
+                                                               [&defaults](const Flat_mesh&) { return defaults; }),
+                          constrained);
+  }
+  Candidate_run outliers_only = selection.run_outliers_only(kept.sigma, w.iterations, test.outlier);
+  report.outlier_vertices = test.outliers;
+  report.displacement = outliers_only.trajectory.back().rms;
+  return outliers_only;
 }
 
 } // namespace Denoising
@@ -354,6 +386,14 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
     at which a candidate stopped: the one with the lowest residual
     correlation there removed the most noise and the least shape, and is
     kept.
+  - <em>Sparse noise.</em> The normal components of the kept result's
+    residual are compared with 3 robust standard deviations (1.4826 times
+    their median absolute value); if some lie beyond, and the residual at
+    the others is smooth (correlation across
+    edges of at least 0.1: shape removed from exact vertices, where noise
+    removed gives 0 or less), the noise is taken for impulsive: the input is
+    denoised again with the kept kernel, radius and number of iterations,
+    only the flagged vertices moving (`outlier_vertices` in the report).
   The report lists every candidate with its iterations, residual RMS,
   correlation, flat share and score, and the one kept; its `noise_level` is
   the kept candidate's residual RMS relative to the mean edge length. The
@@ -505,6 +545,8 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
       throw std::invalid_argument(std::string(fname) + ": noise_level must be finite and non-negative.");
   const unsigned int vertex_iterations = choose_parameter(get_parameter(np, internal_np::vertex_iterations),
                                                           D::Intrinsic_defaults::vertex_iterations);
+  const Vertex_update vertex_update =
+      choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER);
 
   // The noise level is needed by the automatic parameters and by the stopping
   // rule; it is estimated on the input mesh unless given.
@@ -560,52 +602,53 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
     const std::vector<char> fixed = s.mesh.vertex_values_from_input_order(maps.constrained(tmesh));
     D::Fold_safeguard guard;
     guard.enabled = choose_parameter(get_parameter(np, internal_np::prevent_folds), true);
-    D::Least_squares_recovery recovery = D::make_vertex_recovery(
-        choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER));
-    report.vertex_update = recovery.enabled ? Vertex_update::LEAST_SQUARES : Vertex_update::PAPER;
+    D::Least_squares_recovery recovery = D::make_vertex_recovery(vertex_update);
+    report.vertex_update = vertex_update;
     const std::vector<D::Vec3> input_normals = guard.enabled ? s.input_faces.normals : std::vector<D::Vec3>();
     guard.reference = &input_normals;
 
     std::vector<D::Vec3>& points = s.mesh.points;
     const std::vector<D::Vec3> input_points = stop_rule ? points : std::vector<D::Vec3>();
     const double target_displacement = D::Automatic_rules::displacement_fraction * report.noise_level;
-    D::Face_data current = std::move(s.input_faces);
-    std::vector<D::Vec3> filtered, previous, centroids, next;
+    constexpr bool keep_normals = !is_default_parameter<NamedParameters, internal_np::face_normal_t>::value;
+    std::vector<D::Vec3> previous, last_filtered;
     report.stop_reason = Intrinsic_stop_reason::ITERATION_LIMIT;
-    for(unsigned int it = 0; it < iterations; ++it)
-    {
-      if(it > 0)
-        D::compute_face_data<ConcurrencyTag>(s.mesh, points, current);
-      D::intrinsic_filter_pass<ConcurrencyTag>(s.paths, current.normals, current.areas, s.kernel, filtered);
-      D::update_vertices<ConcurrencyTag>(s.mesh, points, filtered, fixed, vertex_iterations, centroids, next, &guard,
-                                         &recovery);
-      report.iterations = it + 1;
-      progress(std::size_t(it + 1), std::size_t(iterations));
-      if(!stop_rule || it + 1 == iterations)
-        continue;
-      // the stopping rule (not before min_iterations unless there is no noise)
-      if(it + 1 >= D::Automatic_rules::min_iterations || report.noise_level < D::Automatic_rules::min_noise)
-      {
-        report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
-        if(report.displacement >= target_displacement)
-        {
-          report.stop_reason = Intrinsic_stop_reason::NOISE_LEVEL_REACHED;
-          break;
-        }
-        if(!previous.empty() && D::mean_angle_degrees(filtered, previous) < D::Automatic_rules::change_tolerance)
-        {
-          report.stop_reason = Intrinsic_stop_reason::CONVERGED;
-          break;
-        }
-      }
-      previous.swap(filtered); // the next pass overwrites all of `filtered`
-    }
+    D::iterate_filter<ConcurrencyTag>(
+        s, s.kernel, std::move(s.input_faces), points, fixed, vertex_iterations, guard, iterations,
+        [&](unsigned int k, const std::vector<D::Vec3>& p, std::vector<D::Vec3>& filtered) {
+          report.iterations = k;
+          progress(std::size_t(k), std::size_t(iterations));
+          bool go_on = true;
+          // the stopping rule (not before min_iterations unless there is no noise)
+          if(stop_rule && k < iterations &&
+             (k >= D::Automatic_rules::min_iterations || report.noise_level < D::Automatic_rules::min_noise))
+          {
+            report.displacement = D::relative_rms_displacement(s.mesh, p, input_points, report.mean_edge_length);
+            if(report.displacement >= target_displacement)
+            {
+              report.stop_reason = Intrinsic_stop_reason::NOISE_LEVEL_REACHED;
+              go_on = false;
+            }
+            else if(!previous.empty() &&
+                    D::mean_angle_degrees(filtered, previous) < D::Automatic_rules::change_tolerance)
+            {
+              report.stop_reason = Intrinsic_stop_reason::CONVERGED;
+              go_on = false;
+            }
+          }
+          if(keep_normals && (!go_on || k == iterations))
+            last_filtered = filtered;
+          if(go_on && stop_rule)
+            previous.swap(filtered); // the next pass overwrites all of `filtered`
+          return go_on;
+        },
+        &recovery);
     if(stop_rule)
       report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
     Run r;
     r.points = s.mesh.vertex_values_in_input_order(points);
-    if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
-      r.normals = s.mesh.in_input_order(filtered);
+    if constexpr(keep_normals)
+      r.normals = s.mesh.in_input_order(last_filtered);
     return r;
   };
 
@@ -620,7 +663,7 @@ Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
   if(report.automatic_parameters && stop_rule && !iterations_given && !kernel_or_radius_given && given_noise < 0.)
   {
     const D::Candidate_run result =
-        D::select_automatically<ConcurrencyTag>(tmesh, np, maps, vertex_iterations, report, fname);
+        D::select_automatically<ConcurrencyTag>(tmesh, np, maps, vertex_iterations, vertex_update, report, fname);
     maps.write_points(tmesh, result.points);
     if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
       maps.write_face_vectors(tmesh, result.normals, get_parameter(np, internal_np::face_normal));

@@ -16,6 +16,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/residual_statistics.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/sparse_noise.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
 
 #include <algorithm>
@@ -222,7 +223,8 @@ class Automatic_selection
 public:
   Automatic_selection(unsigned int vertex_iterations, bool prevent_folds, bool keep_normals,
                       Vertex_update vertex_update = Vertex_update::PAPER)
-      : vertex_iterations_(vertex_iterations), keep_normals_(keep_normals), vertex_update_(vertex_update)
+      : vertex_iterations_(vertex_iterations), keep_normals_(keep_normals),
+        recovery_(make_vertex_recovery(vertex_update))
   {
     guard_.enabled = prevent_folds;
   }
@@ -239,7 +241,6 @@ public:
     guard_.reference = guard_.enabled ? &input_normals_ : nullptr;
     adjacency_ = vertex_adjacency(setup_.mesh);
     mean_edge_ = mean_edge_length(setup_.mesh);
-    recovery_ = make_vertex_recovery(vertex_update_);
   }
 
   // Runs the candidate of kernel width `sigma` on the current paths.
@@ -254,16 +255,56 @@ public:
   // Scores the candidates and returns the index of the one kept.
   std::size_t choose() { return choose_candidate(runs_); }
 
+  // The sparse-noise test (sparse_noise.h) on the result of `run` (one of
+  // runs()); the flags are returned in input vertex order.
+  Sparse_noise_test test_sparse_noise(const Candidate_run& run) const
+  {
+    Sparse_noise_test t = sparse_noise_test(setup_.mesh, adjacency_, setup_.mesh.points,
+                                            setup_.mesh.vertex_values_from_input_order(run.points), fixed_);
+    t.outlier = setup_.mesh.vertex_values_in_input_order(t.outlier);
+    return t;
+  }
+
+  // Denoises the input again with the kernel of width `sigma` on the current
+  // paths, for `iterations` iterations, every vertex held in place but those
+  // flagged in `outlier` (input vertex order).
+  Candidate_run run_outliers_only(double sigma, unsigned int iterations, const std::vector<char>& outlier)
+  {
+    Intrinsic_kernel kernel = setup_.kernel;
+    kernel.sigma_spatial = kernel.sigma_range = sigma;
+    std::vector<char> fixed = fixed_;
+    const std::vector<char> moving = setup_.mesh.vertex_values_from_input_order(outlier);
+    for(std::size_t v = 0; v < fixed.size(); ++v)
+      fixed[v] = fixed[v] || !moving[v];
+    Candidate_run run;
+    run.sigma = sigma;
+    run.relative_radius = setup_.centroid_distance > 0. ? setup_.radius / setup_.centroid_distance : 0.;
+    std::vector<Vec3> points = setup_.mesh.points, normals = keep_normals_ ? setup_.input_faces.normals
+                                                                            : std::vector<Vec3>();
+    run.iterations = iterate_filter<ConcurrencyTag>(
+        setup_, kernel, setup_.input_faces, points, fixed, vertex_iterations_, guard_, iterations,
+        [&](unsigned int, const std::vector<Vec3>&, std::vector<Vec3>& filtered) {
+          if(keep_normals_)
+            normals.swap(filtered); // the next pass overwrites all of `filtered`
+          return true;
+        },
+        &recovery_);
+    run.trajectory.push_back(residual_statistics(adjacency_, points, setup_.mesh.points, mean_edge_));
+    run.points = setup_.mesh.vertex_values_in_input_order(points);
+    if(keep_normals_)
+      run.normals = setup_.mesh.in_input_order(normals);
+    return run;
+  }
+
   std::vector<Candidate_run>& runs() { return runs_; }
   double mean_edge_length_of_input() const { return mean_edge_; }
   double centroid_distance() const { return setup_.centroid_distance; }
-  bool least_squares_update() const { return recovery_.enabled; }
 
 private:
   unsigned int vertex_iterations_;
   bool keep_normals_;
-  Vertex_update vertex_update_;
   Fold_safeguard guard_;
+  // scratch space only: shared by the setups, whose meshes are the same
   Least_squares_recovery recovery_;
   Intrinsic_setup setup_;
   std::vector<char> fixed_;

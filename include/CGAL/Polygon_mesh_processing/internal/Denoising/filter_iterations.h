@@ -3,7 +3,8 @@
 //
 // The iterations of Algorithm 1 on paths set up once: filter the face normals
 // of the current mesh (eq. 8), move the vertices (eq. 10), and let the caller
-// look at the result after each iteration and stop. Shared by the automatic
+// look at the result after each iteration and stop. Shared by
+// intrinsic_denoising() (fixed mode, some parameters given), the automatic
 // selection and the benchmarks that read every iteration.
 
 #ifndef CGAL_PMP_INTERNAL_DENOISING_FILTER_ITERATIONS_H
@@ -22,19 +23,19 @@ namespace internal {
 namespace Denoising {
 
 // Runs up to `max_iterations` iterations on the paths of `s` from `points`
-// (updated in place), whose face data are `start` (the setup's input_faces
-// when `points` is the input). After iteration k (from 1),
+// (updated in place), whose face data are `current` (the setup's input_faces
+// when `points` is the input: copied, or moved if the setup is not run
+// again). After iteration k (from 1),
 // `after(k, points, filtered)` is called with the filtered normals of that
 // pass; it returns false to stop. Returns the number of iterations run.
 // With an enabled `recovery`, the vertices move by its least-squares step
 // instead of eq. 10 (see update_vertices).
 template <typename ConcurrencyTag, typename After>
-unsigned int iterate_filter(const Intrinsic_setup& s, const Intrinsic_kernel& kernel, const Face_data& start,
+unsigned int iterate_filter(const Intrinsic_setup& s, const Intrinsic_kernel& kernel, Face_data current,
                             std::vector<Vec3>& points, const std::vector<char>& fixed, unsigned int vertex_iterations,
                             Fold_safeguard& guard, unsigned int max_iterations, const After& after,
                             Least_squares_recovery* recovery = nullptr)
 {
-  Face_data current = start;
   std::vector<Vec3> filtered, centroids, next;
   for(unsigned int it = 0; it < max_iterations; ++it)
   {
