@@ -93,7 +93,7 @@ static Row run(const Mesh& reference, const Mesh& noisy, PMP::Intrinsic_path_str
     row.paths = (std::min)(row.paths, seconds([&] {
       D::Geodesic_path_statistics stats;
       forest = strategy == PMP::Intrinsic_path_strategy::GEODESIC ? D::geodesic_paths<Tag>(flat, fd, nb, {}, &stats)
-                                                                    : D::square_pattern_paths(flat, fd, nb);
+                                                                    : D::square_pattern_paths(flat, fd, nb, D::square_pattern_compact_min_nodes_for_filter());
       row.paths_built = stats.paths;
       row.fallbacks = stats.fallbacks;
     }));

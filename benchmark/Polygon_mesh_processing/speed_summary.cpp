@@ -103,7 +103,7 @@ template <typename Tag> static Row measure(const Mesh &noisy, const Mesh &refere
   for(std::size_t f = 0; f < m.number_of_faces(); ++f)
     row.max_neighbors = (std::max)(row.max_neighbors, double(nb.end(f) - nb.begin(f)));
   D::Path_forest forest;
-  row.paths = seconds([&] { forest = D::square_pattern_paths<Tag>(m, fd, nb); }, rep);
+  row.paths = seconds([&] { forest = D::square_pattern_paths<Tag>(m, fd, nb, D::square_pattern_compact_min_nodes_for_filter()); }, rep);
   D::Intrinsic_kernel kernel;
   std::vector<D::Vec3> out, points = m.points, c, next;
   row.pass = seconds([&] { D::intrinsic_filter_pass<Tag>(forest, fd.normals, fd.areas, kernel, out); }, rep);

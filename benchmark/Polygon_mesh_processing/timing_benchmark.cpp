@@ -65,7 +65,7 @@ struct Stages
     d = D::mean_adjacent_centroid_distance(mesh, faces);
     D::reorder_faces_for_locality<CGAL::Sequential_tag>(mesh, faces); // as intrinsic_denoising() does
     neighbors = D::geometric_neighborhoods<CGAL::Sequential_tag>(mesh, faces.centroids, 4 * d);
-    paths = D::square_pattern_paths(mesh, faces, neighbors);
+    paths = D::square_pattern_paths(mesh, faces, neighbors, D::square_pattern_compact_min_nodes_for_filter());
   }
 };
 static const Stages& stages()
@@ -87,7 +87,7 @@ static void BM_square_pattern_paths(benchmark::State& state)
 {
   const Stages& s = stages();
   for(auto _ : state)
-    benchmark::DoNotOptimize(D::square_pattern_paths(s.mesh, s.faces, s.neighbors));
+    benchmark::DoNotOptimize(D::square_pattern_paths(s.mesh, s.faces, s.neighbors, D::square_pattern_compact_min_nodes_for_filter()));
 }
 
 template <typename Tag>

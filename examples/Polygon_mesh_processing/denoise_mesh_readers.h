@@ -35,6 +35,21 @@ struct Soup
 
 namespace readers {
 
+// The first face of `soup` that refers to a vertex it does not have, and that
+// reference (`face`, `index`); false if every reference is in range.
+inline bool first_index_out_of_range(const Soup& soup, std::size_t& face, std::size_t& index)
+{
+  for(std::size_t f = 0; f < soup.polygons.size(); ++f)
+    for(std::size_t i : soup.polygons[f])
+      if(i >= soup.points.size())
+      {
+        face = f;
+        index = i;
+        return true;
+      }
+  return false;
+}
+
 // At most `limit` bytes of `in`; `truncated` tells whether there were more.
 inline std::string read_all(std::istream& in, std::size_t limit, bool& truncated)
 {
@@ -166,11 +181,10 @@ inline std::string read_obj_soup(std::istream& in, std::size_t byte_count, Soup&
     return problem;
   if(more)
     return "more data than the file size";
-  for(std::size_t f = 0; f < soup.polygons.size(); ++f)
-    for(std::size_t i : soup.polygons[f])
-      if(i >= soup.points.size())
-        return at(face_line[f]) + "vertex index " + std::to_string(i + 1) + " out of range (" +
-               std::to_string(soup.points.size()) + " vertices)";
+  std::size_t f = 0, i = 0;
+  if(R::first_index_out_of_range(soup, f, i))
+    return at(face_line[f]) + "vertex index " + std::to_string(i + 1) + " out of range (" +
+           std::to_string(soup.points.size()) + " vertices)";
   return std::string();
 }
 
@@ -547,11 +561,10 @@ inline std::string read_ply_soup(std::istream& in, std::size_t byte_count, Soup&
       }
     }
   }
-  for(std::size_t f = 0; f < soup.polygons.size(); ++f)
-    for(std::size_t i : soup.polygons[f])
-      if(i >= soup.points.size())
-        return "face " + std::to_string(f) + ": vertex index " + std::to_string(i) + " out of range (" +
-               std::to_string(soup.points.size()) + " vertices)";
+  std::size_t f = 0, i = 0;
+  if(R::first_index_out_of_range(soup, f, i))
+    return "face " + std::to_string(f) + ": vertex index " + std::to_string(i) + " out of range (" +
+           std::to_string(soup.points.size()) + " vertices)";
   return std::string();
 }
 

@@ -549,6 +549,13 @@ TEST(SparseNoise, ImpulsiveNoiseMovesOnlyTheOutliers)
   EXPECT_LT(error, 0.5 * noisy_error);
   EXPECT_LT(error, all_error);
   EXPECT_LT(PMP::vertex_position_error(m, fandisk()), PMP::vertex_position_error(noisy, fandisk()));
+  // the test and the second run do not depend on the thread count
+  Mesh sequential = noisy;
+  const PMP::Intrinsic_denoising_report s = PMP::intrinsic_denoising<CGAL::Sequential_tag>(sequential);
+  EXPECT_EQ(s.outlier_vertices, r.outlier_vertices);
+  EXPECT_EQ(s.inlier_residual_correlation, r.inlier_residual_correlation);
+  for(auto v : vertices(m))
+    ASSERT_EQ(sequential.point(v), m.point(v));
 
   Mesh gaussian = fandisk();
   PMP::add_gaussian_noise(gaussian, 0.3, CGAL::parameters::random_seed(1));

@@ -543,9 +543,12 @@ TEST(SquarePattern, CompactForestGivesTheSameTreesAndPasses)
   const D::Path_forest stored =
       D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r, D::square_pattern_compact_min_nodes);
   const D::Path_forest compact = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r, 0);
-  // the default keeps the region sizes exactly where the AVX2 kernel runs
-  EXPECT_EQ(D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r).square_regions.empty(),
+  // the setup's choice keeps the region sizes exactly where the AVX2 kernel
+  // runs; the paths' own default stores parents below the memory threshold
+  EXPECT_EQ(D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r, D::square_pattern_compact_min_nodes_for_filter())
+                .square_regions.empty(),
             !D::filter_pass_prefers_square_regions());
+  EXPECT_TRUE(D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r).square_regions.empty());
   ASSERT_TRUE(stored.square_regions.empty());
   ASSERT_EQ(compact.square_regions.size(), m.number_of_faces());
   EXPECT_TRUE(compact.parent.empty());

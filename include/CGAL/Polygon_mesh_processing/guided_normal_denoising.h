@@ -10,7 +10,6 @@
 #define CGAL_POLYGON_MESH_PROCESSING_GUIDED_NORMAL_DENOISING_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/classic_methods.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
 
 #include <CGAL/tags.h>
 

@@ -83,6 +83,18 @@ double mean_adjacent_distance(const std::vector<Vec3>& positions, const Adjacenc
   return count == 0 ? 0. : sum / double(count);
 }
 
+// The forest size from which square-pattern paths keep their parents as
+// region sizes, for the filter pass on this processor: where the AVX2 kernel
+// runs, always (it takes each shell's parent once,
+// intrinsic_filter_faces_l1_avx2_shells, and is faster on region sizes than
+// on a parent per node: one pass, 2 threads, 1.2M faces 0.198-0.211 s against
+// 0.229 s, fandisk 1.50 against 1.70 ms); elsewhere from
+// square_pattern_compact_min_nodes on, for the memory.
+inline std::size_t square_pattern_compact_min_nodes_for_filter()
+{
+  return filter_pass_prefers_square_regions() ? 0 : square_pattern_compact_min_nodes;
+}
+
 // The paths of `strategy` in the neighbourhoods `neighbors` of items at
 // `positions`. The square pattern and geodesic paths need the items to be the
 // faces of `faces` (with their data `fd`); they are refused for other items.
@@ -103,7 +115,7 @@ Path_forest make_paths(const NamedParameters& np, Intrinsic_path_strategy strate
   {
   case Intrinsic_path_strategy::DIRECT: paths = direct_paths(neighbors); break;
   case Intrinsic_path_strategy::SHORTEST_GRAPH_PATH: paths = shortest_graph_paths<ConcurrencyTag>(positions, adjacent, neighbors); break;
-  case Intrinsic_path_strategy::SQUARE_PATTERN: paths = square_pattern_paths<ConcurrencyTag>(*faces, *fd, neighbors); break;
+  case Intrinsic_path_strategy::SQUARE_PATTERN: paths = square_pattern_paths<ConcurrencyTag>(*faces, *fd, neighbors, square_pattern_compact_min_nodes_for_filter()); break;
   case Intrinsic_path_strategy::GEODESIC:
   {
     Geodesic_path_options go;
@@ -141,7 +153,6 @@ struct Intrinsic_setup
   Face_data input_faces;
   double radius = 0.;
   double centroid_distance = 0.; // d, the unit of relative radii and step lengths
-  Csr neighbors;
   Path_forest paths;
   Intrinsic_kernel kernel;
 };
@@ -171,16 +182,18 @@ Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParam
     reorder_faces_for_locality<ConcurrencyTag>(s.mesh, s.input_faces); // same paths; results in s.mesh.input_face order
   if(strategy == Intrinsic_path_strategy::SQUARE_PATTERN) // each neighbourhood searched and used at once
   {
-    s.paths = square_pattern_paths_within<ConcurrencyTag>(s.mesh, s.input_faces, s.radius);
+    s.paths = square_pattern_paths_within<ConcurrencyTag>(s.mesh, s.input_faces, s.radius,
+                                                          square_pattern_compact_min_nodes_for_filter());
     if(step_length)
       set_step_lengths(s.paths, s.input_faces.centroids, d > 0. ? d : 1.);
     return s;
   }
-  s.neighbors = geometric_neighborhoods<ConcurrencyTag>(s.mesh, s.input_faces.centroids, s.radius);
-  s.paths = make_paths<ConcurrencyTag>(np, strategy, step_length, d, s.input_faces.centroids,
-                                       Face_vertex_adjacency{s.mesh}, s.neighbors, &s.mesh, &s.input_faces, fname);
-  Csr().offsets.swap(s.neighbors.offsets); // the paths hold everything the iterations need
-  Csr().items.swap(s.neighbors.items);
+  {
+    // released once the paths are built: they hold everything the iterations need
+    const Csr neighbors = geometric_neighborhoods<ConcurrencyTag>(s.mesh, s.input_faces.centroids, s.radius);
+    s.paths = make_paths<ConcurrencyTag>(np, strategy, step_length, d, s.input_faces.centroids,
+                                         Face_vertex_adjacency{s.mesh}, neighbors, &s.mesh, &s.input_faces, fname);
+  }
   return s;
 }
 

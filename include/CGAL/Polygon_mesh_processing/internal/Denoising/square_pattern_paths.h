@@ -9,7 +9,6 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/path_forest.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/path_weights.h>
 
 #include <algorithm>
 #include <array>
@@ -192,23 +191,13 @@ inline std::array<std::uint32_t, 6> square_pattern_tree(const Flat_mesh& m, cons
   return sizes;
 }
 
-// Where the AVX2 filter kernel runs, square-pattern forests keep their
-// parents as region sizes (Path_forest::square_regions) whatever their size:
-// that kernel takes each shell's parent once (intrinsic_filter_faces_l1_avx2_shells)
-// and is faster on them than on a parent per node (one pass, 2 threads:
-// 1.2M faces 0.198-0.211 s against 0.229 s stored, fandisk 1.50 against
-// 1.70 ms), with 4 bytes less per node. Elsewhere the passes read region
-// sizes through Path_forest::parents(), about 4% slower than stored parents
-// (1.2M faces: 0.232 against 0.223 s), so only forests of at least this many
-// nodes keep them, for the memory.
+// Forests of at least this many nodes keep their parents as region sizes
+// (Path_forest::square_regions, 4 bytes less per node), smaller ones store a
+// parent per node, which filter passes without a kernel for region sizes read
+// about 4% faster (1.2M faces: 0.223 against 0.232 s). Which layout a filter
+// pass prefers is the caller's choice (intrinsic_setup.h: 0, region sizes
+// always, where the AVX2 kernel runs).
 constexpr std::size_t square_pattern_compact_min_nodes = std::size_t(1) << 25;
-
-// The forest size from which square_pattern_paths() keeps region sizes on
-// this processor (see above).
-inline std::size_t default_square_pattern_compact_min_nodes()
-{
-  return filter_pass_prefers_square_regions() ? 0 : square_pattern_compact_min_nodes;
-}
 
 // The square-pattern forest of every face, its tree built over the
 // neighbours that `neighbors(i, scratch)` returns ([begin, end) pointers;
@@ -235,7 +224,7 @@ Path_forest square_pattern_forest(const Flat_mesh& m, const Face_data& fd, std::
 // it once, on the input mesh), from the neighbourhoods `neighbors`.
 template <typename ConcurrencyTag = CGAL::Sequential_tag>
 Path_forest square_pattern_paths(const Flat_mesh& m, const Face_data& fd, const Csr& neighbors,
-                                 std::size_t compact_min_nodes = default_square_pattern_compact_min_nodes())
+                                 std::size_t compact_min_nodes = square_pattern_compact_min_nodes)
 {
   struct Scratch
   {
@@ -257,7 +246,7 @@ Path_forest square_pattern_paths(const Flat_mesh& m, const Face_data& fd, const 
 // forest with parents.
 template <typename ConcurrencyTag = CGAL::Sequential_tag>
 Path_forest square_pattern_paths_within(const Flat_mesh& m, const Face_data& fd, double radius,
-                                        std::size_t compact_min_nodes = default_square_pattern_compact_min_nodes())
+                                        std::size_t compact_min_nodes = square_pattern_compact_min_nodes)
 {
   struct Scratch
   {
