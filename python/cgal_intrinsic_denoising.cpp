@@ -475,6 +475,33 @@ unsigned int vertex_steps(long long v, const char *fname)
   return static_cast<unsigned int>(v);
 }
 
+// One of the noise models on a copy of (V, F): `noise(mesh, np)` with the
+// seed and the constrained vertices as named parameters.
+template <typename Noise>
+py::array_t<double> add_noise(const py::handle &V, const py::handle &F, long long seed, const py::object &constrained,
+                              Noise &&noise)
+{
+  if(seed < 0 || seed > static_cast<long long>(std::numeric_limits<unsigned int>::max()))
+    throw py::value_error("seed must be a non-negative integer below 2^32, not " + std::to_string(seed));
+  const unsigned int s = static_cast<unsigned int>(seed);
+  return run_on_copy(V, F, constrained, 0, [&](Mesh &mesh, const auto &map) {
+    noise(mesh, CGAL::parameters::random_seed(s).vertex_is_constrained_map(map));
+  });
+}
+
+// `metric(mesh, reference)` of (V, F) against (V_reference, F_reference or F).
+template <typename Metric>
+double compare(const py::handle &V, const py::handle &F, const py::handle &V_reference, const py::object &F_reference,
+               Metric &&metric)
+{
+  std::unique_ptr<Input> a = make_input(V, F);
+  std::unique_ptr<Input> b = make_input(V_reference, F_reference.is_none() ? F : F_reference, "V_reference",
+                                        "F_reference");
+  double e = 0.;
+  run_released([&] { e = metric(a->mesh, b->mesh); });
+  return e;
+}
+
 // (V, F) of a mesh: vertices and faces in index order.
 py::tuple arrays_of(const Mesh &mesh)
 {
@@ -709,22 +736,12 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       "ZDZ15, guided mesh normal filtering of Zhang et al. 2015 (guided_normal_denoising()); neighbor_radius, if "
       "given, replaces relative_neighbor_radius. Returns the new V.");
 
-  auto seed_of = [](long long seed)
-  {
-    if(seed < 0 || seed > static_cast<long long>(std::numeric_limits<unsigned int>::max()))
-      throw py::value_error("seed must be a non-negative integer below 2^32, not " + std::to_string(seed));
-    return static_cast<unsigned int>(seed);
-  };
   m.def(
       "add_gaussian_noise",
-      [seed_of](const py::handle &V, const py::handle &F, double sigma, long long seed, const py::object &constrained)
+      [](const py::handle &V, const py::handle &F, double sigma, long long seed, const py::object &constrained)
       {
-        const unsigned int s = seed_of(seed);
-        return run_on_copy(V, F, constrained, 0,
-                           [&](Mesh &mesh, const auto &map) {
-                             PMP::add_gaussian_noise(
-                                 mesh, sigma, CGAL::parameters::random_seed(s).vertex_is_constrained_map(map));
-                           });
+        return add_noise(V, F, seed, constrained,
+                         [sigma](Mesh &mesh, const auto &np) { PMP::add_gaussian_noise(mesh, sigma, np); });
       },
       py::arg("V"), py::arg("F"), py::arg("sigma"), py::kw_only(), py::arg("seed") = 0,
       py::arg("constrained") = py::none(),
@@ -732,16 +749,11 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       "sigma_E), seeded (add_gaussian_noise()). Returns the new V.");
   m.def(
       "add_impulsive_noise",
-      [seed_of](const py::handle &V, const py::handle &F, double fraction, double sigma, long long seed,
-                const py::object &constrained)
+      [](const py::handle &V, const py::handle &F, double fraction, double sigma, long long seed,
+         const py::object &constrained)
       {
-        const unsigned int s = seed_of(seed);
-        return run_on_copy(V, F, constrained, 0,
-                           [&](Mesh &mesh, const auto &map) {
-                             PMP::add_impulsive_noise(
-                                 mesh, fraction, sigma,
-                                 CGAL::parameters::random_seed(s).vertex_is_constrained_map(map));
-                           });
+        return add_noise(V, F, seed, constrained, [fraction, sigma](Mesh &mesh, const auto &np)
+                         { PMP::add_impulsive_noise(mesh, fraction, sigma, np); });
       },
       py::arg("V"), py::arg("F"), py::arg("fraction"), py::arg("sigma"), py::kw_only(), py::arg("seed") = 0,
       py::arg("constrained") = py::none(),
@@ -749,14 +761,10 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       "standard deviation sigma times the mean edge length (add_impulsive_noise()). Returns the new V.");
   m.def(
       "add_depth_scan_noise",
-      [seed_of](const py::handle &V, const py::handle &F, double sigma, long long seed, const py::object &constrained)
+      [](const py::handle &V, const py::handle &F, double sigma, long long seed, const py::object &constrained)
       {
-        const unsigned int s = seed_of(seed);
-        return run_on_copy(V, F, constrained, 0,
-                           [&](Mesh &mesh, const auto &map) {
-                             PMP::add_depth_scan_noise(
-                                 mesh, sigma, CGAL::parameters::random_seed(s).vertex_is_constrained_map(map));
-                           });
+        return add_noise(V, F, seed, constrained,
+                         [sigma](Mesh &mesh, const auto &np) { PMP::add_depth_scan_noise(mesh, sigma, np); });
       },
       py::arg("V"), py::arg("F"), py::arg("sigma"), py::kw_only(), py::arg("seed") = 0,
       py::arg("constrained") = py::none(),
@@ -767,12 +775,8 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       "face_normal_error",
       [](const py::handle &V, const py::handle &F, const py::handle &V_reference, const py::object &F_reference)
       {
-        std::unique_ptr<Input> a = make_input(V, F);
-        std::unique_ptr<Input> b =
-            make_input(V_reference, F_reference.is_none() ? F : F_reference, "V_reference", "F_reference");
-        double e = 0.;
-        run_released([&] { e = PMP::face_normal_error(a->mesh, b->mesh); });
-        return e;
+        return compare(V, F, V_reference, F_reference,
+                       [](const Mesh &a, const Mesh &b) { return PMP::face_normal_error(a, b); });
       },
       py::arg("V"), py::arg("F"), py::arg("V_reference"), py::arg("F_reference") = py::none(),
       "E_n (eq. 12): the mean angle in degrees between the face normals of (V, F) and of the reference, face by "
@@ -781,12 +785,8 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       "vertex_position_error",
       [](const py::handle &V, const py::handle &F, const py::handle &V_reference, const py::object &F_reference)
       {
-        std::unique_ptr<Input> a = make_input(V, F);
-        std::unique_ptr<Input> b =
-            make_input(V_reference, F_reference.is_none() ? F : F_reference, "V_reference", "F_reference");
-        double e = 0.;
-        run_released([&] { e = PMP::vertex_position_error(a->mesh, b->mesh); });
-        return e;
+        return compare(V, F, V_reference, F_reference,
+                       [](const Mesh &a, const Mesh &b) { return PMP::vertex_position_error(a, b); });
       },
       py::arg("V"), py::arg("F"), py::arg("V_reference"), py::arg("F_reference") = py::none(),
       "E_v (eq. 11): the area-weighted distance from the vertices of (V, F) to the reference surface "
