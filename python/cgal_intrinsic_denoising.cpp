@@ -53,8 +53,7 @@ typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
 typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
 typedef CGAL::Parallel_if_available_tag Tag;
 
-namespace
-{
+namespace {
 
 // A mesh built from (V, F), with the number of rows of V.
 struct Input
@@ -64,7 +63,7 @@ struct Input
   std::size_t duplicated_vertices = 0;
 };
 
-std::string shape_text(const py::array &a)
+std::string shape_text(const py::array& a)
 {
   std::string s = "(";
   for(py::ssize_t i = 0; i < a.ndim(); ++i)
@@ -73,7 +72,7 @@ std::string shape_text(const py::array &a)
 }
 
 // V as a C-contiguous float64 array of shape (n, 3), or ValueError.
-py::array_t<double, py::array::c_style> read_vertices(const py::handle &object, const char *name)
+py::array_t<double, py::array::c_style> read_vertices(const py::handle& object, const char* name)
 {
   py::array a = py::array::ensure(object);
   if(!a)
@@ -84,17 +83,16 @@ py::array_t<double, py::array::c_style> read_vertices(const py::handle &object, 
   if(a.ndim() != 2 || a.shape(1) != 3)
     throw py::value_error(std::string(name) + " must have shape (n, 3), not " + shape_text(a));
   auto v = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
-  const double *p = v.data();
+  const double* p = v.data();
   for(py::ssize_t i = 0; i < v.shape(0); ++i)
     for(int c = 0; c < 3; ++c)
       if(!std::isfinite(p[3 * i + c]))
-        throw py::value_error(std::string(name) + ": row " + std::to_string(i) +
-                              " has a NaN or infinite coordinate");
+        throw py::value_error(std::string(name) + ": row " + std::to_string(i) + " has a NaN or infinite coordinate");
   return v;
 }
 
 // F as int64 indices of shape (m, 3), each in [0, rows), or ValueError.
-py::array_t<std::int64_t, py::array::c_style> read_faces(const py::handle &object, std::size_t rows, const char *name)
+py::array_t<std::int64_t, py::array::c_style> read_faces(const py::handle& object, std::size_t rows, const char* name)
 {
   py::array a = py::array::ensure(object);
   if(!a)
@@ -115,7 +113,7 @@ py::array_t<std::int64_t, py::array::c_style> read_faces(const py::handle &objec
                               std::to_string(u.data()[i]) + ", out of range [0, " + std::to_string(rows) + ")");
   }
   auto f = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
-  const std::int64_t *p = f.data();
+  const std::int64_t* p = f.data();
   for(py::ssize_t i = 0; i < f.size(); ++i)
     if(p[i] < 0 || static_cast<std::uint64_t>(p[i]) >= rows)
       throw py::value_error(std::string(name) + ": row " + std::to_string(i / 3) + " has the index " +
@@ -123,8 +121,8 @@ py::array_t<std::int64_t, py::array::c_style> read_faces(const py::handle &objec
   return f;
 }
 
-std::unique_ptr<Input> make_input(const py::handle &V, const py::handle &F, const char *vname = "V",
-                                  const char *fname = "F")
+std::unique_ptr<Input> make_input(const py::handle& V, const py::handle& F, const char* vname = "V",
+                                  const char* fname = "F")
 {
   const auto v = read_vertices(V, vname);
   const std::size_t rows = static_cast<std::size_t>(v.shape(0));
@@ -147,16 +145,16 @@ std::unique_ptr<Input> make_input(const py::handle &V, const py::handle &F, cons
 }
 
 // Row i: the point of vertex i (vertex i of the mesh is row i of V).
-py::array_t<double> positions(const Input &input)
+py::array_t<double> positions(const Input& input)
 {
   py::array_t<double> out({static_cast<py::ssize_t>(input.rows), py::ssize_t(3)});
-  double *p = out.mutable_data();
+  double* p = out.mutable_data();
   std::size_t i = 0;
   for(vertex_descriptor v : vertices(input.mesh))
   {
     if(i == input.rows)
       break;
-    const auto &q = input.mesh.point(v);
+    const auto& q = input.mesh.point(v);
     p[3 * i] = q.x();
     p[3 * i + 1] = q.y();
     p[3 * i + 2] = q.z();
@@ -168,7 +166,7 @@ py::array_t<double> positions(const Input &input)
 // The vertex_is_constrained_map of `constrained` (None: no vertex), a
 // boolean array with one entry per row of V (vertices that the soup repair
 // appended are not constrained).
-Mesh::Property_map<vertex_descriptor, bool> constrained_map(Input &input, const py::object &constrained)
+Mesh::Property_map<vertex_descriptor, bool> constrained_map(Input& input, const py::object& constrained)
 {
   auto map = input.mesh.add_property_map<vertex_descriptor, bool>("v:py_constrained", false).first;
   if(constrained.is_none())
@@ -188,7 +186,7 @@ Mesh::Property_map<vertex_descriptor, bool> constrained_map(Input &input, const 
   return map;
 }
 
-PMP::Vertex_update read_vertex_update(const std::string &name)
+PMP::Vertex_update read_vertex_update(const std::string& name)
 {
   if(name == "paper")
     return PMP::Vertex_update::PAPER;
@@ -197,7 +195,7 @@ PMP::Vertex_update read_vertex_update(const std::string &name)
   throw py::value_error("vertex_update must be 'paper' or 'least_squares', not '" + name + "'");
 }
 
-PMP::Intrinsic_path_strategy read_paths(const std::string &name)
+PMP::Intrinsic_path_strategy read_paths(const std::string& name)
 {
   if(name == "square_pattern")
     return PMP::Intrinsic_path_strategy::SQUARE_PATTERN;
@@ -231,7 +229,8 @@ struct Thread_limit
 
 // Runs `work` with the GIL released; a std::invalid_argument becomes
 // ValueError with its message.
-template <typename Work> void run_released(Work &&work)
+template <typename Work>
+void run_released(Work&& work)
 {
   std::exception_ptr failure;
   {
@@ -266,25 +265,26 @@ struct Intrinsic_options
 
 struct Intrinsic_call
 {
-  Mesh &mesh;
-  const Intrinsic_options &o;
+  Mesh& mesh;
+  const Intrinsic_options& o;
   PMP::Intrinsic_denoising_report report;
 };
 
-unsigned int to_unsigned(long long x, const char *name)
+unsigned int to_unsigned(long long x, const char* name)
 {
   if(x < 0 || x > static_cast<long long>(std::numeric_limits<unsigned int>::max()))
-    throw py::value_error(std::string("intrinsic_denoising(): ") + name + " must be a non-negative integer below 2^32, not " +
-                          std::to_string(x));
+    throw py::value_error(std::string("intrinsic_denoising(): ") + name +
+                          " must be a non-negative integer below 2^32, not " + std::to_string(x));
   return static_cast<unsigned int>(x);
 }
 
 // The named parameters whose presence changes what the automatic mode does
 // are chained stage by stage, each only when given (as the `denoise` tool
 // does), so that the automatic mode chooses the others.
-template <int stage, typename NamedParameters> void run_intrinsic(Intrinsic_call &call, const NamedParameters &np)
+template <int stage, typename NamedParameters>
+void run_intrinsic(Intrinsic_call& call, const NamedParameters& np)
 {
-  const Intrinsic_options &o = call.o;
+  const Intrinsic_options& o = call.o;
   if constexpr(stage == 0)
   {
     if(o.number_of_iterations)
@@ -326,7 +326,7 @@ template <int stage, typename NamedParameters> void run_intrinsic(Intrinsic_call
     call.report = PMP::intrinsic_denoising<Tag>(call.mesh, np);
 }
 
-const char *stop_reason_name(PMP::Intrinsic_stop_reason r)
+const char* stop_reason_name(PMP::Intrinsic_stop_reason r)
 {
   switch(r)
   {
@@ -342,7 +342,7 @@ const char *stop_reason_name(PMP::Intrinsic_stop_reason r)
   return "residual_correlated";
 }
 
-py::dict report_dict(const PMP::Intrinsic_denoising_report &r)
+py::dict report_dict(const PMP::Intrinsic_denoising_report& r)
 {
   py::dict d;
   d["automatic_parameters"] = r.automatic_parameters;
@@ -360,7 +360,7 @@ py::dict report_dict(const PMP::Intrinsic_denoising_report &r)
   d["stop_reason"] = stop_reason_name(r.stop_reason);
   d["displacement"] = r.displacement;
   py::list candidates;
-  for(const PMP::Intrinsic_candidate_report &c : r.candidates)
+  for(const PMP::Intrinsic_candidate_report& c : r.candidates)
   {
     py::dict e;
     e["sigma"] = c.sigma;
@@ -380,8 +380,8 @@ py::dict report_dict(const PMP::Intrinsic_denoising_report &r)
   return d;
 }
 
-py::tuple denoise(const py::handle &V, const py::handle &F, const py::object &constrained, const py::object &progress,
-                  long long threads, const Intrinsic_options &o)
+py::tuple denoise(const py::handle& V, const py::handle& F, const py::object& constrained, const py::object& progress,
+                  long long threads, const Intrinsic_options& o)
 {
   // argument checks that need no mesh (the library checks the values)
   if(o.number_of_iterations)
@@ -402,16 +402,14 @@ py::tuple denoise(const py::handle &V, const py::handle &F, const py::object &co
 
   // Called from the calling thread after each iteration: Ctrl-C and the
   // user's callback run there, with the GIL; a Python error ends the run.
-  auto callback = [&progress](std::size_t done, std::size_t total)
-  {
+  auto callback = [&progress](std::size_t done, std::size_t total) {
     py::gil_scoped_acquire acquire;
     if(PyErr_CheckSignals() != 0)
       throw py::error_already_set();
     if(!progress.is_none())
       progress(done, total);
   };
-  const bool stop = o.stop_when_converged ? *o.stop_when_converged
-                                          : o.automatic_parameters && !o.number_of_iterations;
+  const bool stop = o.stop_when_converged ? *o.stop_when_converged : o.automatic_parameters && !o.number_of_iterations;
   const auto np = CGAL::parameters::vertex_iterations(vertex_iterations)
                       .spatial_exponent(o.spatial_exponent)
                       .range_exponent(o.range_exponent)
@@ -431,7 +429,7 @@ py::tuple denoise(const py::handle &V, const py::handle &F, const py::object &co
 
   py::dict report = report_dict(call.report);
   py::array_t<double> filtered({static_cast<py::ssize_t>(num_faces(input->mesh)), py::ssize_t(3)});
-  double *n = filtered.mutable_data();
+  double* n = filtered.mutable_data();
   std::size_t i = 0;
   for(face_descriptor f : faces(input->mesh))
   {
@@ -451,8 +449,8 @@ py::tuple denoise(const py::handle &V, const py::handle &F, const py::object &co
 // Runs `method(mesh, constrained map)` on a copy of (V, F) and returns the
 // new positions.
 template <typename Method>
-py::array_t<double> run_on_copy(const py::handle &V, const py::handle &F, const py::object &constrained,
-                                long long threads, Method &&method)
+py::array_t<double> run_on_copy(const py::handle& V, const py::handle& F, const py::object& constrained,
+                                long long threads, Method&& method)
 {
   std::unique_ptr<Input> input = make_input(V, F);
   auto map = constrained_map(*input, constrained);
@@ -461,14 +459,15 @@ py::array_t<double> run_on_copy(const py::handle &V, const py::handle &F, const 
   return positions(*input);
 }
 
-template <typename Map> auto classic_np(const Map &map, long long iterations, const char *fname)
+template <typename Map>
+auto classic_np(const Map& map, long long iterations, const char* fname)
 {
   if(iterations < 0 || iterations > static_cast<long long>(std::numeric_limits<unsigned int>::max()))
     throw py::value_error(std::string(fname) + ": number_of_iterations must be a non-negative integer below 2^32");
   return CGAL::parameters::vertex_is_constrained_map(map).number_of_iterations(static_cast<unsigned int>(iterations));
 }
 
-unsigned int vertex_steps(long long v, const char *fname)
+unsigned int vertex_steps(long long v, const char* fname)
 {
   if(v < 0 || v > static_cast<long long>(std::numeric_limits<unsigned int>::max()))
     throw py::value_error(std::string(fname) + ": vertex_iterations must be a non-negative integer below 2^32");
@@ -478,40 +477,40 @@ unsigned int vertex_steps(long long v, const char *fname)
 // One of the noise models on a copy of (V, F): `noise(mesh, np)` with the
 // seed and the constrained vertices as named parameters.
 template <typename Noise>
-py::array_t<double> add_noise(const py::handle &V, const py::handle &F, long long seed, const py::object &constrained,
-                              Noise &&noise)
+py::array_t<double> add_noise(const py::handle& V, const py::handle& F, long long seed, const py::object& constrained,
+                              Noise&& noise)
 {
   if(seed < 0 || seed > static_cast<long long>(std::numeric_limits<unsigned int>::max()))
     throw py::value_error("seed must be a non-negative integer below 2^32, not " + std::to_string(seed));
   const unsigned int s = static_cast<unsigned int>(seed);
-  return run_on_copy(V, F, constrained, 0, [&](Mesh &mesh, const auto &map) {
+  return run_on_copy(V, F, constrained, 0, [&](Mesh& mesh, const auto& map) {
     noise(mesh, CGAL::parameters::random_seed(s).vertex_is_constrained_map(map));
   });
 }
 
 // `metric(mesh, reference)` of (V, F) against (V_reference, F_reference or F).
 template <typename Metric>
-double compare(const py::handle &V, const py::handle &F, const py::handle &V_reference, const py::object &F_reference,
-               Metric &&metric)
+double compare(const py::handle& V, const py::handle& F, const py::handle& V_reference, const py::object& F_reference,
+               Metric&& metric)
 {
   std::unique_ptr<Input> a = make_input(V, F);
-  std::unique_ptr<Input> b = make_input(V_reference, F_reference.is_none() ? F : F_reference, "V_reference",
-                                        "F_reference");
+  std::unique_ptr<Input> b =
+      make_input(V_reference, F_reference.is_none() ? F : F_reference, "V_reference", "F_reference");
   double e = 0.;
   run_released([&] { e = metric(a->mesh, b->mesh); });
   return e;
 }
 
 // (V, F) of a mesh: vertices and faces in index order.
-py::tuple arrays_of(const Mesh &mesh)
+py::tuple arrays_of(const Mesh& mesh)
 {
   py::array_t<double> V({static_cast<py::ssize_t>(num_vertices(mesh)), py::ssize_t(3)});
   py::array_t<std::int64_t> F({static_cast<py::ssize_t>(num_faces(mesh)), py::ssize_t(3)});
-  double *p = V.mutable_data();
-  std::int64_t *q = F.mutable_data();
+  double* p = V.mutable_data();
+  std::int64_t* q = F.mutable_data();
   for(vertex_descriptor v : vertices(mesh))
   {
-    const auto &x = mesh.point(v);
+    const auto& x = mesh.point(v);
     *p++ = x.x();
     *p++ = x.y();
     *p++ = x.z();
@@ -533,15 +532,14 @@ PYBIND11_MODULE(cgal_intrinsic_denoising, m)
 
   m.def(
       "denoise",
-      [](const py::handle &V, const py::handle &F, bool automatic_parameters, std::optional<double> noise_level,
+      [](const py::handle& V, const py::handle& F, bool automatic_parameters, std::optional<double> noise_level,
          std::optional<long long> number_of_iterations, std::optional<bool> stop_when_converged,
-         long long vertex_iterations, const std::string &vertex_update, std::optional<double> sigma_spatial,
+         long long vertex_iterations, const std::string& vertex_update, std::optional<double> sigma_spatial,
          std::optional<double> sigma_range, double spatial_exponent, double range_exponent,
          std::optional<double> neighbor_radius, std::optional<double> relative_neighbor_radius,
-         const std::string &path_strategy, bool use_step_length, long long geodesic_patch_rings,
-         bool include_self_weight, bool prevent_folds, const py::object &constrained, const py::object &progress,
-         long long threads)
-      {
+         const std::string& path_strategy, bool use_step_length, long long geodesic_patch_rings,
+         bool include_self_weight, bool prevent_folds, const py::object& constrained, const py::object& progress,
+         long long threads) {
         Intrinsic_options o;
         o.automatic_parameters = automatic_parameters;
         o.noise_level = noise_level;
@@ -564,9 +562,9 @@ PYBIND11_MODULE(cgal_intrinsic_denoising, m)
       },
       py::arg("V"), py::arg("F"), py::kw_only(), py::arg("automatic_parameters") = true,
       py::arg("noise_level") = py::none(), py::arg("number_of_iterations") = py::none(),
-      py::arg("stop_when_converged") = py::none(), py::arg("vertex_iterations") = 2,
-      py::arg("vertex_update") = "paper", py::arg("sigma_spatial") = py::none(), py::arg("sigma_range") = py::none(),
-      py::arg("spatial_exponent") = 1., py::arg("range_exponent") = 1., py::arg("neighbor_radius") = py::none(),
+      py::arg("stop_when_converged") = py::none(), py::arg("vertex_iterations") = 2, py::arg("vertex_update") = "paper",
+      py::arg("sigma_spatial") = py::none(), py::arg("sigma_range") = py::none(), py::arg("spatial_exponent") = 1.,
+      py::arg("range_exponent") = 1., py::arg("neighbor_radius") = py::none(),
       py::arg("relative_neighbor_radius") = py::none(), py::arg("path_strategy") = "square_pattern",
       py::arg("use_step_length") = false, py::arg("geodesic_patch_rings") = 0, py::arg("include_self_weight") = false,
       py::arg("prevent_folds") = true, py::arg("constrained") = py::none(), py::arg("progress") = py::none(),
@@ -589,19 +587,16 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
 
   m.def(
       "bilateral_mesh_denoising",
-      [](const py::handle &V, const py::handle &F, double sigma_spatial, std::optional<double> sigma_range,
-         long long number_of_iterations, const py::object &constrained, long long threads)
-      {
-        const char *fname = "bilateral_mesh_denoising()";
-        return run_on_copy(V, F, constrained, threads,
-                           [&](Mesh &mesh, const auto &map)
-                           {
-                             const auto np = classic_np(map, number_of_iterations, fname).sigma_spatial(sigma_spatial);
-                             if(sigma_range)
-                               PMP::bilateral_mesh_denoising<Tag>(mesh, np.sigma_range(*sigma_range));
-                             else
-                               PMP::bilateral_mesh_denoising<Tag>(mesh, np);
-                           });
+      [](const py::handle& V, const py::handle& F, double sigma_spatial, std::optional<double> sigma_range,
+         long long number_of_iterations, const py::object& constrained, long long threads) {
+        const char* fname = "bilateral_mesh_denoising()";
+        return run_on_copy(V, F, constrained, threads, [&](Mesh& mesh, const auto& map) {
+          const auto np = classic_np(map, number_of_iterations, fname).sigma_spatial(sigma_spatial);
+          if(sigma_range)
+            PMP::bilateral_mesh_denoising<Tag>(mesh, np.sigma_range(*sigma_range));
+          else
+            PMP::bilateral_mesh_denoising<Tag>(mesh, np);
+        });
       },
       py::arg("V"), py::arg("F"), py::kw_only(), py::arg("sigma_spatial") = 1., py::arg("sigma_range") = py::none(),
       py::arg("number_of_iterations") = 5, py::arg("constrained") = py::none(), py::arg("threads") = 0,
@@ -610,17 +605,13 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
 
   m.def(
       "non_iterative_denoising",
-      [](const py::handle &V, const py::handle &F, double sigma_spatial, double sigma_range,
-         long long number_of_iterations, const py::object &constrained, long long threads)
-      {
-        const char *fname = "non_iterative_denoising()";
-        return run_on_copy(V, F, constrained, threads,
-                           [&](Mesh &mesh, const auto &map)
-                           {
-                             PMP::non_iterative_denoising<Tag>(mesh, classic_np(map, number_of_iterations, fname)
-                                                                         .sigma_spatial(sigma_spatial)
-                                                                         .sigma_range(sigma_range));
-                           });
+      [](const py::handle& V, const py::handle& F, double sigma_spatial, double sigma_range,
+         long long number_of_iterations, const py::object& constrained, long long threads) {
+        const char* fname = "non_iterative_denoising()";
+        return run_on_copy(V, F, constrained, threads, [&](Mesh& mesh, const auto& map) {
+          PMP::non_iterative_denoising<Tag>(
+              mesh, classic_np(map, number_of_iterations, fname).sigma_spatial(sigma_spatial).sigma_range(sigma_range));
+        });
       },
       py::arg("V"), py::arg("F"), py::kw_only(), py::arg("sigma_spatial") = 2., py::arg("sigma_range") = 0.5,
       py::arg("number_of_iterations") = 1, py::arg("constrained") = py::none(), py::arg("threads") = 0,
@@ -628,22 +619,19 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
 
   m.def(
       "fast_feature_preserving_denoising",
-      [](const py::handle &V, const py::handle &F, double normal_threshold, bool use_vertex_neighborhood,
-         long long number_of_iterations, long long vertex_iterations, const std::string &vertex_update,
-         const py::object &constrained, long long threads)
-      {
-        const char *fname = "fast_feature_preserving_denoising()";
+      [](const py::handle& V, const py::handle& F, double normal_threshold, bool use_vertex_neighborhood,
+         long long number_of_iterations, long long vertex_iterations, const std::string& vertex_update,
+         const py::object& constrained, long long threads) {
+        const char* fname = "fast_feature_preserving_denoising()";
         const PMP::Vertex_update update = read_vertex_update(vertex_update);
-        return run_on_copy(V, F, constrained, threads,
-                           [&](Mesh &mesh, const auto &map)
-                           {
-                             PMP::fast_feature_preserving_denoising<Tag>(
-                                 mesh, classic_np(map, number_of_iterations, fname)
-                                           .normal_threshold(normal_threshold)
-                                           .use_vertex_neighborhood(use_vertex_neighborhood)
-                                           .vertex_iterations(vertex_steps(vertex_iterations, fname))
-                                           .vertex_update(update));
-                           });
+        return run_on_copy(V, F, constrained, threads, [&](Mesh& mesh, const auto& map) {
+          PMP::fast_feature_preserving_denoising<Tag>(mesh,
+                                                      classic_np(map, number_of_iterations, fname)
+                                                          .normal_threshold(normal_threshold)
+                                                          .use_vertex_neighborhood(use_vertex_neighborhood)
+                                                          .vertex_iterations(vertex_steps(vertex_iterations, fname))
+                                                          .vertex_update(update));
+        });
       },
       py::arg("V"), py::arg("F"), py::kw_only(), py::arg("normal_threshold") = 0.5,
       py::arg("use_vertex_neighborhood") = true, py::arg("number_of_iterations") = 20,
@@ -654,32 +642,28 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
 
   m.def(
       "bilateral_normal_denoising",
-      [](const py::handle &V, const py::handle &F, double sigma_spatial, double sigma_range,
-         long long number_of_iterations, long long vertex_iterations, const std::string &vertex_update,
+      [](const py::handle& V, const py::handle& F, double sigma_spatial, double sigma_range,
+         long long number_of_iterations, long long vertex_iterations, const std::string& vertex_update,
          std::optional<double> neighbor_radius, std::optional<double> relative_neighbor_radius,
-         const py::object &constrained, long long threads)
-      {
-        const char *fname = "bilateral_normal_denoising()";
+         const py::object& constrained, long long threads) {
+        const char* fname = "bilateral_normal_denoising()";
         const PMP::Vertex_update update = read_vertex_update(vertex_update);
         if(neighbor_radius && relative_neighbor_radius)
           throw py::value_error("bilateral_normal_denoising(): give neighbor_radius or relative_neighbor_radius, "
                                 "not both");
-        return run_on_copy(V, F, constrained, threads,
-                           [&](Mesh &mesh, const auto &map)
-                           {
-                             const auto np = classic_np(map, number_of_iterations, fname)
-                                                 .sigma_spatial(sigma_spatial)
-                                                 .sigma_range(sigma_range)
-                                                 .vertex_iterations(vertex_steps(vertex_iterations, fname))
-                                                 .vertex_update(update);
-                             if(neighbor_radius)
-                               PMP::bilateral_normal_denoising<Tag>(mesh, np.neighbor_radius(*neighbor_radius));
-                             else if(relative_neighbor_radius)
-                               PMP::bilateral_normal_denoising<Tag>(
-                                   mesh, np.relative_neighbor_radius(*relative_neighbor_radius));
-                             else
-                               PMP::bilateral_normal_denoising<Tag>(mesh, np);
-                           });
+        return run_on_copy(V, F, constrained, threads, [&](Mesh& mesh, const auto& map) {
+          const auto np = classic_np(map, number_of_iterations, fname)
+                              .sigma_spatial(sigma_spatial)
+                              .sigma_range(sigma_range)
+                              .vertex_iterations(vertex_steps(vertex_iterations, fname))
+                              .vertex_update(update);
+          if(neighbor_radius)
+            PMP::bilateral_normal_denoising<Tag>(mesh, np.neighbor_radius(*neighbor_radius));
+          else if(relative_neighbor_radius)
+            PMP::bilateral_normal_denoising<Tag>(mesh, np.relative_neighbor_radius(*relative_neighbor_radius));
+          else
+            PMP::bilateral_normal_denoising<Tag>(mesh, np);
+        });
       },
       py::arg("V"), py::arg("F"), py::kw_only(), py::arg("sigma_spatial") = 1., py::arg("sigma_range") = 0.35,
       py::arg("number_of_iterations") = 20, py::arg("vertex_iterations") = 10, py::arg("vertex_update") = "paper",
@@ -690,16 +674,13 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
 
   m.def(
       "l0_denoising",
-      [](const py::handle &V, const py::handle &F, double l0_weight, double regularization_weight,
-         const py::object &constrained, long long threads)
-      {
-        return run_on_copy(V, F, constrained, threads,
-                           [&](Mesh &mesh, const auto &map)
-                           {
-                             PMP::l0_denoising<Tag>(mesh, CGAL::parameters::vertex_is_constrained_map(map)
-                                                              .l0_weight(l0_weight)
-                                                              .regularization_weight(regularization_weight));
-                           });
+      [](const py::handle& V, const py::handle& F, double l0_weight, double regularization_weight,
+         const py::object& constrained, long long threads) {
+        return run_on_copy(V, F, constrained, threads, [&](Mesh& mesh, const auto& map) {
+          PMP::l0_denoising<Tag>(
+              mesh, CGAL::parameters::vertex_is_constrained_map(map).l0_weight(l0_weight).regularization_weight(
+                        regularization_weight));
+        });
       },
       py::arg("V"), py::arg("F"), py::kw_only(), py::arg("l0_weight") = 0.02 * 180. / 3.14159265358979323846,
       py::arg("regularization_weight") = 0.1, py::arg("constrained") = py::none(), py::arg("threads") = 0,
@@ -707,27 +688,23 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
 
   m.def(
       "guided_normal_denoising",
-      [](const py::handle &V, const py::handle &F, double sigma_spatial, double sigma_range,
+      [](const py::handle& V, const py::handle& F, double sigma_spatial, double sigma_range,
          std::optional<double> neighbor_radius, double relative_neighbor_radius, long long number_of_iterations,
-         long long vertex_iterations, const std::string &vertex_update, const py::object &constrained,
-         long long threads)
-      {
-        const char *fname = "guided_normal_denoising()";
+         long long vertex_iterations, const std::string& vertex_update, const py::object& constrained,
+         long long threads) {
+        const char* fname = "guided_normal_denoising()";
         const PMP::Vertex_update update = read_vertex_update(vertex_update);
-        return run_on_copy(V, F, constrained, threads,
-                           [&](Mesh &mesh, const auto &map)
-                           {
-                             const auto np = classic_np(map, number_of_iterations, fname)
-                                                 .sigma_spatial(sigma_spatial)
-                                                 .sigma_range(sigma_range)
-                                                 .vertex_iterations(vertex_steps(vertex_iterations, fname))
-                                                 .vertex_update(update);
-                             if(neighbor_radius)
-                               PMP::guided_normal_denoising<Tag>(mesh, np.neighbor_radius(*neighbor_radius));
-                             else
-                               PMP::guided_normal_denoising<Tag>(
-                                   mesh, np.relative_neighbor_radius(relative_neighbor_radius));
-                           });
+        return run_on_copy(V, F, constrained, threads, [&](Mesh& mesh, const auto& map) {
+          const auto np = classic_np(map, number_of_iterations, fname)
+                              .sigma_spatial(sigma_spatial)
+                              .sigma_range(sigma_range)
+                              .vertex_iterations(vertex_steps(vertex_iterations, fname))
+                              .vertex_update(update);
+          if(neighbor_radius)
+            PMP::guided_normal_denoising<Tag>(mesh, np.neighbor_radius(*neighbor_radius));
+          else
+            PMP::guided_normal_denoising<Tag>(mesh, np.relative_neighbor_radius(relative_neighbor_radius));
+        });
       },
       py::arg("V"), py::arg("F"), py::kw_only(), py::arg("sigma_spatial") = 1., py::arg("sigma_range") = 0.35,
       py::arg("neighbor_radius") = py::none(), py::arg("relative_neighbor_radius") = 2.,
@@ -738,10 +715,9 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
 
   m.def(
       "add_gaussian_noise",
-      [](const py::handle &V, const py::handle &F, double sigma, long long seed, const py::object &constrained)
-      {
+      [](const py::handle& V, const py::handle& F, double sigma, long long seed, const py::object& constrained) {
         return add_noise(V, F, seed, constrained,
-                         [sigma](Mesh &mesh, const auto &np) { PMP::add_gaussian_noise(mesh, sigma, np); });
+                         [sigma](Mesh& mesh, const auto& np) { PMP::add_gaussian_noise(mesh, sigma, np); });
       },
       py::arg("V"), py::arg("F"), py::arg("sigma"), py::kw_only(), py::arg("seed") = 0,
       py::arg("constrained") = py::none(),
@@ -749,11 +725,11 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       "sigma_E), seeded (add_gaussian_noise()). Returns the new V.");
   m.def(
       "add_impulsive_noise",
-      [](const py::handle &V, const py::handle &F, double fraction, double sigma, long long seed,
-         const py::object &constrained)
-      {
-        return add_noise(V, F, seed, constrained, [fraction, sigma](Mesh &mesh, const auto &np)
-                         { PMP::add_impulsive_noise(mesh, fraction, sigma, np); });
+      [](const py::handle& V, const py::handle& F, double fraction, double sigma, long long seed,
+         const py::object& constrained) {
+        return add_noise(V, F, seed, constrained, [fraction, sigma](Mesh& mesh, const auto& np) {
+          PMP::add_impulsive_noise(mesh, fraction, sigma, np);
+        });
       },
       py::arg("V"), py::arg("F"), py::arg("fraction"), py::arg("sigma"), py::kw_only(), py::arg("seed") = 0,
       py::arg("constrained") = py::none(),
@@ -761,10 +737,9 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       "standard deviation sigma times the mean edge length (add_impulsive_noise()). Returns the new V.");
   m.def(
       "add_depth_scan_noise",
-      [](const py::handle &V, const py::handle &F, double sigma, long long seed, const py::object &constrained)
-      {
+      [](const py::handle& V, const py::handle& F, double sigma, long long seed, const py::object& constrained) {
         return add_noise(V, F, seed, constrained,
-                         [sigma](Mesh &mesh, const auto &np) { PMP::add_depth_scan_noise(mesh, sigma, np); });
+                         [sigma](Mesh& mesh, const auto& np) { PMP::add_depth_scan_noise(mesh, sigma, np); });
       },
       py::arg("V"), py::arg("F"), py::arg("sigma"), py::kw_only(), py::arg("seed") = 0,
       py::arg("constrained") = py::none(),
@@ -773,20 +748,18 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
 
   m.def(
       "face_normal_error",
-      [](const py::handle &V, const py::handle &F, const py::handle &V_reference, const py::object &F_reference)
-      {
+      [](const py::handle& V, const py::handle& F, const py::handle& V_reference, const py::object& F_reference) {
         return compare(V, F, V_reference, F_reference,
-                       [](const Mesh &a, const Mesh &b) { return PMP::face_normal_error(a, b); });
+                       [](const Mesh& a, const Mesh& b) { return PMP::face_normal_error(a, b); });
       },
       py::arg("V"), py::arg("F"), py::arg("V_reference"), py::arg("F_reference") = py::none(),
       "E_n (eq. 12): the mean angle in degrees between the face normals of (V, F) and of the reference, face by "
       "face (F_reference default: F).");
   m.def(
       "vertex_position_error",
-      [](const py::handle &V, const py::handle &F, const py::handle &V_reference, const py::object &F_reference)
-      {
+      [](const py::handle& V, const py::handle& F, const py::handle& V_reference, const py::object& F_reference) {
         return compare(V, F, V_reference, F_reference,
-                       [](const Mesh &a, const Mesh &b) { return PMP::vertex_position_error(a, b); });
+                       [](const Mesh& a, const Mesh& b) { return PMP::vertex_position_error(a, b); });
       },
       py::arg("V"), py::arg("F"), py::arg("V_reference"), py::arg("F_reference") = py::none(),
       "E_v (eq. 11): the area-weighted distance from the vertices of (V, F) to the reference surface "
@@ -794,8 +767,7 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
 
   m.def(
       "read_mesh",
-      [](const std::string &path)
-      {
+      [](const std::string& path) {
         Mesh mesh;
         std::vector<std::string> warnings;
         std::string problem;
@@ -812,7 +784,7 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
           throw py::value_error(problem);
         if(mesh.has_garbage())
           mesh.collect_garbage();
-        for(const std::string &w : warnings)
+        for(const std::string& w : warnings)
           PyErr_WarnEx(PyExc_UserWarning, ("'" + path + "': " + w).c_str(), 1);
         return arrays_of(mesh);
       },
@@ -823,8 +795,7 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       "reported by a UserWarning.");
   m.def(
       "write_mesh",
-      [](const std::string &path, const py::handle &V, const py::handle &F)
-      {
+      [](const std::string& path, const py::handle& V, const py::handle& F) {
         std::unique_ptr<Input> input = make_input(V, F);
         std::string problem;
         {

@@ -3,7 +3,8 @@
 set -euo pipefail
 packages=(g++ cmake make ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev
           libboost-program-options-dev libtbb-dev libgtest-dev libbenchmark-dev doxygen
-          dpkg-dev libjs-mathjax python3-dev pybind11-dev python3-numpy python3-pytest)
+          dpkg-dev libjs-mathjax python3-dev pybind11-dev python3-numpy python3-pytest
+          clang-format)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

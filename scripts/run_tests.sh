@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# The whole test suite: install dependencies, build everything (tests,
-# examples, benchmarks), run the tests with CTest, check the installed package
-# (a prefix, then the Debian package) with a downstream project, build the
-# manual and check in chromium that its formulas render.
+# The whole test suite: install dependencies, check the formatting, build
+# everything (tests, examples, benchmarks), run the tests with CTest, check
+# the installed package (a prefix, then the Debian package) with a downstream
+# project, build the manual and check in chromium that its formulas render.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
+# every C++ file formatted by .clang-format (fails fast, before the build)
+bash scripts/check_format.sh
 # chromium, node and tools/render's node modules: the HTML report's browser tests
 bash scripts/install_render_deps.sh
 bash scripts/build.sh

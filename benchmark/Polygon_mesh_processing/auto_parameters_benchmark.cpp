@@ -1,4 +1,4 @@
-// Automatic parameters and stopping rule of intrinsic_denoising() (issue 7),
+// Automatic parameters and stopping rule of intrinsic_denoising(),
 // measured against a grid search on a set of seeded noisy inputs.
 //
 // Usage: auto_parameters_benchmark [--grid] [--wide-grid] [--estimates] [--trace] [--only name]
@@ -31,11 +31,11 @@
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
 #include <CGAL/Polygon_mesh_processing/fast_feature_preserving_denoising.h>
 #include <CGAL/Polygon_mesh_processing/guided_normal_denoising.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/noise_estimate.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 #include <CGAL/Polygon_mesh_processing/l0_denoising.h>
 #include <CGAL/Polygon_mesh_processing/non_iterative_denoising.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/noise_estimate.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -90,9 +90,24 @@ static std::vector<Input> make_inputs(const std::string& only, const std::vector
       {"fandisk", "CAD", [](Mesh& m) { return load("fandisk.off", m); }, 0.2, 0.},
       {"fandisk", "CAD", [](Mesh& m) { return load("fandisk.off", m); }, 0.3, 0.},
       {"fandisk", "CAD", [](Mesh& m) { return load("fandisk.off", m); }, 0.5, 0.2},
-      {"octahedron", "synthetic CAD", [](Mesh& m) { m = denoising_test::graded_octahedron<Mesh>(17, 1.4); return true; }, 0.3, 0.},
-      {"prism", "synthetic CAD", [](Mesh& m) { m = denoising_test::benchmark_prism<Mesh>(); return true; }, 0.1, 0.},
-      {"cube", "synthetic CAD", [](Mesh& m) { m = denoising_test::cube<Mesh>(24); return true; }, 0.2, 0.},
+      {"octahedron", "synthetic CAD",
+       [](Mesh& m) {
+         m = denoising_test::graded_octahedron<Mesh>(17, 1.4);
+         return true;
+       },
+       0.3, 0.},
+      {"prism", "synthetic CAD",
+       [](Mesh& m) {
+         m = denoising_test::benchmark_prism<Mesh>();
+         return true;
+       },
+       0.1, 0.},
+      {"cube", "synthetic CAD",
+       [](Mesh& m) {
+         m = denoising_test::cube<Mesh>(24);
+         return true;
+       },
+       0.2, 0.},
       {"turbine", "CAD", [](Mesh& m) { return load("turbine.off", m); }, 0.2, 0.},
       {"mech-holes-shark", "CAD", [](Mesh& m) { return load("mech-holes-shark.off", m); }, 0.3, 0.},
       {"lion-head", "organic", [](Mesh& m) { return load("lion-head.off", m); }, 0.1, 0.},
@@ -188,7 +203,8 @@ static Grid_best grid_search(const Input& in, bool trace, const Grid& grid = sta
   Grid_best best;
   for(double r : grid.radii)
   {
-    const D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters> maps(in.noisy, CGAL::parameters::default_values());
+    const D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters> maps(in.noisy,
+                                                                              CGAL::parameters::default_values());
     const auto np = CGAL::parameters::relative_neighbor_radius(r);
     D::Intrinsic_setup base = D::make_intrinsic_setup<Tag>(in.noisy, np, maps, "grid");
     const double L = D::mean_edge_length(base.mesh);
@@ -196,41 +212,42 @@ static Grid_best grid_search(const Input& in, bool trace, const Grid& grid = sta
     D::Face_data ref_fd;
     D::compute_face_data<CGAL::Sequential_tag>(base.mesh, ref.points, ref_fd);
     for(unsigned int v : grid.vertex_iterations)
-    for(double sigma : grid.sigmas)
-    {
-      D::Intrinsic_kernel kernel = base.kernel;
-      kernel.sigma_spatial = kernel.sigma_range = sigma;
-      std::vector<D::Vec3> points = base.mesh.points;
-      const std::vector<D::Vec3> input_points = points;
-      std::vector<D::Vec3> previous;
-      const std::vector<char> fixed(points.size(), 0);
-      D::Fold_safeguard guard;
-      guard.enabled = true;
-      guard.reference = &base.input_faces.normals;
-      D::iterate_filter<Tag>(base, kernel, base.input_faces, points, fixed, v, guard, kmax,
-                             [&](unsigned int k, const std::vector<D::Vec3>& p, std::vector<D::Vec3>& filtered) {
-        const double En = normal_error(base.mesh, p, ref_fd.normals);
-        if(En < best.En)
-          best = {En, sigma, r, k, v};
-        if(trace)
-        {
-          double disp = 0., change = 0.;
-          for(std::size_t x = 0; x < p.size(); ++x)
-            disp += D::squared_norm(p[x] - input_points[x]);
-          disp = std::sqrt(disp / double(p.size())) / L;
-          if(!previous.empty())
-          {
-            for(std::size_t f = 0; f < filtered.size(); ++f)
-              change += std::atan2(D::norm(D::cross(filtered[f], previous[f])), D::dot(filtered[f], previous[f]));
-            change = change / double(filtered.size()) * (180. / 3.14159265358979323846);
-          }
-          std::fprintf(stderr, "%s | %s | r %.0f s %.2f k %2u | En %.3f | disp %.4f | change %.4f\n",
-                       in.name.c_str(), in.noise.c_str(), r, sigma, k, En, disp, change);
-        }
-        previous = filtered;
-        return true;
-      });
-    }
+      for(double sigma : grid.sigmas)
+      {
+        D::Intrinsic_kernel kernel = base.kernel;
+        kernel.sigma_spatial = kernel.sigma_range = sigma;
+        std::vector<D::Vec3> points = base.mesh.points;
+        const std::vector<D::Vec3> input_points = points;
+        std::vector<D::Vec3> previous;
+        const std::vector<char> fixed(points.size(), 0);
+        D::Fold_safeguard guard;
+        guard.enabled = true;
+        guard.reference = &base.input_faces.normals;
+        D::iterate_filter<Tag>(
+            base, kernel, base.input_faces, points, fixed, v, guard, kmax,
+            [&](unsigned int k, const std::vector<D::Vec3>& p, std::vector<D::Vec3>& filtered) {
+              const double En = normal_error(base.mesh, p, ref_fd.normals);
+              if(En < best.En)
+                best = {En, sigma, r, k, v};
+              if(trace)
+              {
+                double disp = 0., change = 0.;
+                for(std::size_t x = 0; x < p.size(); ++x)
+                  disp += D::squared_norm(p[x] - input_points[x]);
+                disp = std::sqrt(disp / double(p.size())) / L;
+                if(!previous.empty())
+                {
+                  for(std::size_t f = 0; f < filtered.size(); ++f)
+                    change += std::atan2(D::norm(D::cross(filtered[f], previous[f])), D::dot(filtered[f], previous[f]));
+                  change = change / double(filtered.size()) * (180. / 3.14159265358979323846);
+                }
+                std::fprintf(stderr, "%s | %s | r %.0f s %.2f k %2u | En %.3f | disp %.4f | change %.4f\n",
+                             in.name.c_str(), in.noise.c_str(), r, sigma, k, En, disp, change);
+              }
+              previous = filtered;
+              return true;
+            });
+      }
   }
   return best;
 }
@@ -240,13 +257,12 @@ static Grid_best grid_search(const Input& in, bool trace, const Grid& grid = sta
 static const char* const classic_names[] = {"FDC03", "JDD03", "SRML07", "ZFAT11", "HS13", "ZDZ15"};
 static std::vector<double> classic_errors(const Input& in)
 {
-  const std::vector<std::function<void(Mesh&)>> methods = {
-      [](Mesh& m) { PMP::bilateral_mesh_denoising(m); },
-      [](Mesh& m) { PMP::non_iterative_denoising(m); },
-      [](Mesh& m) { PMP::fast_feature_preserving_denoising(m); },
-      [](Mesh& m) { PMP::bilateral_normal_denoising(m); },
-      [](Mesh& m) { PMP::l0_denoising(m); },
-      [](Mesh& m) { PMP::guided_normal_denoising(m); }};
+  const std::vector<std::function<void(Mesh&)>> methods = {[](Mesh& m) { PMP::bilateral_mesh_denoising(m); },
+                                                           [](Mesh& m) { PMP::non_iterative_denoising(m); },
+                                                           [](Mesh& m) { PMP::fast_feature_preserving_denoising(m); },
+                                                           [](Mesh& m) { PMP::bilateral_normal_denoising(m); },
+                                                           [](Mesh& m) { PMP::l0_denoising(m); },
+                                                           [](Mesh& m) { PMP::guided_normal_denoising(m); }};
   std::vector<double> errors;
   for(const auto& method : methods)
   {
@@ -281,14 +297,16 @@ int main(int argc, char** argv)
     }
     else
     {
-      std::cerr << "usage: auto_parameters_benchmark [--grid] [--wide-grid] [--estimates] [--trace] [--only name] [--mesh file.off sigma kind]...\n";
+      std::cerr << "usage: auto_parameters_benchmark [--grid] [--wide-grid] [--estimates] [--trace] [--only name] "
+                   "[--mesh file.off sigma kind]...\n";
       return 2;
     }
   }
   const std::vector<Input> inputs = make_inputs(only, extras);
   if(wide)
   {
-    std::printf("| input | noise | wide grid best E_n | at (sigma, r/d, k, v) | best classic default E_n (method) |\n|---|---|---|---|---|\n");
+    std::printf("| input | noise | wide grid best E_n | at (sigma, r/d, k, v) | best classic default E_n (method) "
+                "|\n|---|---|---|---|---|\n");
     for(const Input& in : inputs)
     {
       const Grid_best g = grid_search(in, trace, wide_grid());
@@ -303,7 +321,8 @@ int main(int argc, char** argv)
   }
   if(estimates_only)
   {
-    std::printf("| input | kind | noise | faces | estimate q25 | q50 | noise-free q25 | q50 | estimate | median adjacent L1 normal difference |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("| input | kind | noise | faces | estimate q25 | q50 | noise-free q25 | q50 | estimate | median "
+                "adjacent L1 normal difference |\n|---|---|---|---|---|---|---|---|---|---|\n");
     for(const Input& in : inputs)
     {
       const D::Flat_mesh a = flat(in.noisy), b = flat(in.reference);
@@ -321,13 +340,15 @@ int main(int argc, char** argv)
           }
         });
       std::nth_element(diffs.begin(), diffs.begin() + diffs.size() / 2, diffs.end());
-      std::printf("| %s | %s | %s | %zu | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f |\n", in.name.c_str(), in.kind.c_str(),
-                  in.noise.c_str(), a.number_of_faces(), e25.relative_noise, e50.relative_noise, c25.relative_noise,
-                  c50.relative_noise, D::estimate_noise<Tag>(a).relative_noise, diffs[diffs.size() / 2]);
+      std::printf("| %s | %s | %s | %zu | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f |\n", in.name.c_str(),
+                  in.kind.c_str(), in.noise.c_str(), a.number_of_faces(), e25.relative_noise, e50.relative_noise,
+                  c25.relative_noise, c50.relative_noise, D::estimate_noise<Tag>(a).relative_noise,
+                  diffs[diffs.size() / 2]);
     }
     return 0;
   }
-  std::printf("| input | kind | noise | faces | noisy E_n | auto E_n | residual RMS | - | candidates (sigma/r/k, kept starred) | estimate-rule E_n | sigma | r (d) | k | stop | auto s | fixed defaults E_n |"
+  std::printf("| input | kind | noise | faces | noisy E_n | auto E_n | residual RMS | - | candidates (sigma/r/k, kept "
+              "starred) | estimate-rule E_n | sigma | r (d) | k | stop | auto s | fixed defaults E_n |"
               "%s FDC03 | JDD03 | SRML07 | ZFAT11 | HS13 | ZDZ15 | best classic | auto / best classic |\n",
               grid ? " grid best E_n | at (sigma, r, k) | auto / grid |" : "");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|%s---|---|---|---|---|---|---|---|\n",
@@ -342,7 +363,7 @@ int main(int argc, char** argv)
     const char* stop = r.stop_reason == PMP::Intrinsic_stop_reason::NOISE_LEVEL_REACHED   ? "noise level"
                        : r.stop_reason == PMP::Intrinsic_stop_reason::CONVERGED           ? "converged"
                        : r.stop_reason == PMP::Intrinsic_stop_reason::RESIDUAL_CORRELATED ? "residual"
-                                                                                           : "limit";
+                                                                                          : "limit";
     // the selection's candidates: sigma / r / iterations, the kept one starred
     std::string schedule;
     for(std::size_t c = 0; c < r.candidates.size(); ++c)

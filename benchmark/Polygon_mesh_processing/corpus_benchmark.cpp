@@ -46,13 +46,13 @@
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
 #include <CGAL/Polygon_mesh_processing/fast_feature_preserving_denoising.h>
 #include <CGAL/Polygon_mesh_processing/guided_normal_denoising.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/residual_statistics.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 #include <CGAL/Polygon_mesh_processing/l0_denoising.h>
 #include <CGAL/Polygon_mesh_processing/non_iterative_denoising.h>
 #include <CGAL/Polygon_mesh_processing/smooth_shape.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/residual_statistics.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -93,7 +93,12 @@ struct Corpus_mesh
 struct Noise
 {
   std::string label; // e.g. "gauss0.3", "impulse10%1.0", "depth0.4"
-  enum Kind { GAUSSIAN, IMPULSIVE, DEPTH } kind;
+  enum Kind
+  {
+    GAUSSIAN,
+    IMPULSIVE,
+    DEPTH
+  } kind;
   double sigma;
 };
 
@@ -180,9 +185,15 @@ void make_noisy(const Input& in, Mesh& reference, Mesh& noisy)
   const auto np = CGAL::parameters::random_seed(seed);
   switch(in.noise.kind)
   {
-  case Noise::GAUSSIAN: PMP::add_gaussian_noise(noisy, in.noise.sigma, np); break;
-  case Noise::IMPULSIVE: PMP::add_impulsive_noise(noisy, 0.1, in.noise.sigma, np); break;
-  case Noise::DEPTH: PMP::add_depth_scan_noise(noisy, in.noise.sigma, np); break;
+  case Noise::GAUSSIAN:
+    PMP::add_gaussian_noise(noisy, in.noise.sigma, np);
+    break;
+  case Noise::IMPULSIVE:
+    PMP::add_impulsive_noise(noisy, 0.1, in.noise.sigma, np);
+    break;
+  case Noise::DEPTH:
+    PMP::add_depth_scan_noise(noisy, in.noise.sigma, np);
+    break;
   }
 }
 
@@ -255,24 +266,25 @@ void oracle(const Mesh& noisy, const Mesh& reference, Reference& out, std::FILE*
       guard.reference = &base.input_faces.normals;
       D::iterate_filter<Tag>(base, kernel, base.input_faces, points, fixed, v_iter, guard, kmax,
                              [&](unsigned int k, const std::vector<D::Vec3>& p, std::vector<D::Vec3>&) {
-        D::Face_data fd;
-        D::compute_face_data<Tag>(base.mesh, p, fd);
-        const double En = D::mean_angle_degrees(fd.normals, ref_fd.normals);
-        if(En < out.oracle_En)
-        {
-          out.oracle_En = En;
-          out.oracle_sigma = sigma;
-          out.oracle_radius = r;
-          out.oracle_k = k;
-        }
-        if(trace)
-        {
-          const D::Residual_statistics st = D::residual_statistics(adjacency, p, input_points, L);
-          std::fprintf(trace, "%s\t%.1f\t%.1f\t%u\t%.4f\t%.5f\t%.5f\n", name.c_str(), sigma, r, k, En, st.rms,
-                       st.correlation);
-        }
-        return true;
-      });
+                               D::Face_data fd;
+                               D::compute_face_data<Tag>(base.mesh, p, fd);
+                               const double En = D::mean_angle_degrees(fd.normals, ref_fd.normals);
+                               if(En < out.oracle_En)
+                               {
+                                 out.oracle_En = En;
+                                 out.oracle_sigma = sigma;
+                                 out.oracle_radius = r;
+                                 out.oracle_k = k;
+                               }
+                               if(trace)
+                               {
+                                 const D::Residual_statistics st =
+                                     D::residual_statistics(adjacency, p, input_points, L);
+                                 std::fprintf(trace, "%s\t%.1f\t%.1f\t%u\t%.4f\t%.5f\t%.5f\n", name.c_str(), sigma, r,
+                                              k, En, st.rms, st.correlation);
+                               }
+                               return true;
+                             });
     }
   }
 }
@@ -404,11 +416,13 @@ void candidate_statistics(const Input& in, std::FILE* out)
       }
     }
     const D::Residual_statistics st = r.iterations > 0 ? r.trajectory[r.iterations - 1] : D::Residual_statistics();
-    std::fprintf(out, "%s\t%.1f\t%.1f\t%u\t%d\t%.4f\t%.5f\t%.5f\t%.5f\t%.4f\t%.5f\t%.4f\t%.4f\t%.4f\t%.4f\t%.4f\t%.5f\t%.4f\t%.4f\n",
-                 in.name().c_str(), r.sigma, r.relative_radius, r.iterations, int(r.stopped_by_correlation), En, st.rms,
-                 st.correlation, r.score, kurtosis, tail_energy > 0. ? tail_cross / tail_energy : 0.,
-                 all > 0. ? top / all : 0., edges_n ? double(flat) / double(edges_n) : 0., blended[0], blended[1],
-                 blended[2], double(beyond4) / double(mag.size()), rough_blend, rough_result);
+    std::fprintf(
+        out,
+        "%s\t%.1f\t%.1f\t%u\t%d\t%.4f\t%.5f\t%.5f\t%.5f\t%.4f\t%.5f\t%.4f\t%.4f\t%.4f\t%.4f\t%.4f\t%.5f\t%.4f\t%.4f\n",
+        in.name().c_str(), r.sigma, r.relative_radius, r.iterations, int(r.stopped_by_correlation), En, st.rms,
+        st.correlation, r.score, kurtosis, tail_energy > 0. ? tail_cross / tail_energy : 0., all > 0. ? top / all : 0.,
+        edges_n ? double(flat) / double(edges_n) : 0., blended[0], blended[1], blended[2],
+        double(beyond4) / double(mag.size()), rough_blend, rough_result);
   }
   std::fflush(out);
 }
@@ -561,8 +575,9 @@ void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool 
       std::fprintf(results, "\t%s_En\t%s_Ev\t%s_turned\t%s_s", c, c, c, c);
     std::fprintf(results, "\tsmooth_time\n");
   }
-  std::printf("| input | noisy | fixed eq.10 | fixed LS | auto eq.10 | auto LS | smooth_shape (best) | best classic | "
-              "turned (fixed LS, auto LS) | s (fixed eq.10, fixed LS, auto LS) |\n|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| input | noisy | fixed eq.10 | fixed LS | auto eq.10 | auto LS | smooth_shape (best) | best classic | "
+      "turned (fixed LS, auto LS) | s (fixed eq.10, fixed LS, auto LS) |\n|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<std::string> seen;
   for(const Input& in0 : inputs)
   {
@@ -579,7 +594,9 @@ void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool 
       const double noisy_En = PMP::face_normal_error(noisy, reference);
       const double noisy_Ev = PMP::vertex_position_error(noisy, reference);
       const auto fixed = [](PMP::Vertex_update u) {
-        return [u](Mesh& m) { PMP::intrinsic_denoising<Tag>(m, CGAL::parameters::automatic_parameters(false).vertex_update(u)); };
+        return [u](Mesh& m) {
+          PMP::intrinsic_denoising<Tag>(m, CGAL::parameters::automatic_parameters(false).vertex_update(u));
+        };
       };
       const auto automatic = [](PMP::Vertex_update u) {
         return [u](Mesh& m) { PMP::intrinsic_denoising<Tag>(m, CGAL::parameters::vertex_update(u)); };
@@ -599,24 +616,24 @@ void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool 
       double best_time = 0.;
       for(double c : {0.01, 0.03, 0.1, 0.3, 1., 3., 10., 30.})
         if(baselines)
-      {
-        const Outcome s = outcome(noisy, reference, [&](Mesh& m) { PMP::smooth_shape(m, c * L * L); });
-        if(s.En < best_smooth.En)
         {
-          best_smooth = s;
-          best_time = c;
+          const Outcome s = outcome(noisy, reference, [&](Mesh& m) { PMP::smooth_shape(m, c * L * L); });
+          if(s.En < best_smooth.En)
+          {
+            best_smooth = s;
+            best_time = c;
+          }
         }
-      }
       o.push_back(best_smooth);
       Outcome best_classic;
       best_classic.En = 1e300;
       for(const auto& c : classic_methods())
         if(baselines)
-      {
-        const Outcome r = outcome(noisy, reference, c);
-        if(r.En < best_classic.En)
-          best_classic = r;
-      }
+        {
+          const Outcome r = outcome(noisy, reference, c);
+          if(r.En < best_classic.En)
+            best_classic = r;
+        }
       o.push_back(best_classic);
       char smooth[64] = "-", classic[32] = "-";
       if(baselines)
@@ -644,8 +661,8 @@ void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool 
 
 int main(int argc, char** argv)
 {
-  std::string reference_file = std::string(CORPUS_DIR) + "/corpus_reference.tsv", build_file, trace_file,
-              results_file, only;
+  std::string reference_file = std::string(CORPUS_DIR) + "/corpus_reference.tsv", build_file, trace_file, results_file,
+              only;
   bool list = false, candidates = false, irregular_mode = false, baselines = true;
   std::size_t stride = 1, offset = 0;
   for(int i = 1; i < argc; ++i)
@@ -683,8 +700,9 @@ int main(int argc, char** argv)
       only = next();
     else
     {
-      std::cerr << "usage: corpus_benchmark [--list] [--build-reference FILE [--trace FILE]] [--reference FILE] "
-                   "[--results FILE] [--stride N] [--offset M] [--only TEXT] [--candidates] [--irregular [--no-baselines]]\n";
+      std::cerr
+          << "usage: corpus_benchmark [--list] [--build-reference FILE [--trace FILE]] [--reference FILE] "
+             "[--results FILE] [--stride N] [--offset M] [--only TEXT] [--candidates] [--irregular [--no-baselines]]\n";
       return 2;
     }
   }
@@ -762,8 +780,9 @@ int main(int argc, char** argv)
   if(results)
     std::fprintf(results, "# mesh\tnoise\tseed\tgroup\tnoisy_En\toracle_En\tauto_En\tfixed_En\tbest_classic_En\t"
                           "noisy_Ev\tauto_Ev\tfixed_Ev\tauto_s\tfixed_s\tchosen\n");
-  std::printf("| input | faces | noisy | oracle | auto | fixed | best classic | auto/oracle | auto s | fixed s | chosen |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| input | faces | noisy | oracle | auto | fixed | best classic | auto/oracle | auto s | fixed s | chosen |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<Row> regular, irregular;
   std::size_t missing = 0;
   for(const Input& in : inputs)
@@ -802,10 +821,10 @@ int main(int argc, char** argv)
                 chosen);
     std::fflush(stdout);
     if(results)
-      std::fprintf(results, "%s\t%s\t%.4f\t%.4f\t%.4f\t%.4f\t%.4f\t%.4g\t%.4g\t%.4g\t%.3f\t%.3f\t%s\n", in.key().c_str(),
-                   in.mesh.irregular ? "irregular" : "regular", row.ref.noisy_En, row.ref.oracle_En, row.auto_En,
-                   row.fixed_En, best_classic, row.ref.noisy_Ev, row.auto_Ev, row.fixed_Ev, row.auto_s, row.fixed_s,
-                   chosen);
+      std::fprintf(results, "%s\t%s\t%.4f\t%.4f\t%.4f\t%.4f\t%.4f\t%.4g\t%.4g\t%.4g\t%.3f\t%.3f\t%s\n",
+                   in.key().c_str(), in.mesh.irregular ? "irregular" : "regular", row.ref.noisy_En, row.ref.oracle_En,
+                   row.auto_En, row.fixed_En, best_classic, row.ref.noisy_Ev, row.auto_Ev, row.fixed_Ev, row.auto_s,
+                   row.fixed_s, chosen);
     (in.mesh.irregular ? irregular : regular).push_back(row);
   }
   if(results)

@@ -66,8 +66,8 @@ struct Row
   double En = 0., Ev = 0.;
   std::size_t nodes = 0;
   std::size_t paths_built = 0, fallbacks = 0; // geodesic only: neighbour paths, of which direct
-  D::Geodesic_path_statistics phases;          // geodesic only: a run with time_phases
-  double phased_paths = 0.;                    // the seconds of that run
+  D::Geodesic_path_statistics phases;         // geodesic only: a run with time_phases
+  double phased_paths = 0.;                   // the seconds of that run
 };
 
 template <typename Tag>
@@ -91,12 +91,14 @@ static Row run(const Mesh& reference, const Mesh& noisy, PMP::Intrinsic_path_str
   {
     D::Path_forest forest;
     row.paths = (std::min)(row.paths, seconds([&] {
-      D::Geodesic_path_statistics stats;
-      forest = strategy == PMP::Intrinsic_path_strategy::GEODESIC ? D::geodesic_paths<Tag>(flat, fd, nb, {}, &stats)
-                                                                    : D::square_pattern_paths(flat, fd, nb, D::square_pattern_compact_min_nodes_for_filter());
-      row.paths_built = stats.paths;
-      row.fallbacks = stats.fallbacks;
-    }));
+                             D::Geodesic_path_statistics stats;
+                             forest = strategy == PMP::Intrinsic_path_strategy::GEODESIC
+                                          ? D::geodesic_paths<Tag>(flat, fd, nb, {}, &stats)
+                                          : D::square_pattern_paths(flat, fd, nb,
+                                                                    D::square_pattern_compact_min_nodes_for_filter());
+                             row.paths_built = stats.paths;
+                             row.fallbacks = stats.fallbacks;
+                           }));
     row.nodes = forest.face.size();
     Mesh denoised = noisy;
     row.total = (std::min)(row.total, seconds([&] { PMP::intrinsic_denoising<Tag>(denoised, np); }));
@@ -114,10 +116,9 @@ static Row run(const Mesh& reference, const Mesh& noisy, PMP::Intrinsic_path_str
       const double t = seconds([&] { D::geodesic_paths<Tag>(flat, fd, nb, options, &s); });
       auto keep_min = [r](double& kept, double v) { kept = r == 0 ? v : (std::min)(kept, v); };
       keep_min(row.phased_paths, t);
-      for(double D::Geodesic_path_statistics::*f : {&D::Geodesic_path_statistics::patch_seconds,
-                                                     &D::Geodesic_path_statistics::tree_seconds,
-                                                     &D::Geodesic_path_statistics::clear_seconds,
-                                                     &D::Geodesic_path_statistics::query_seconds})
+      for(double D::Geodesic_path_statistics::*f :
+          {&D::Geodesic_path_statistics::patch_seconds, &D::Geodesic_path_statistics::tree_seconds,
+           &D::Geodesic_path_statistics::clear_seconds, &D::Geodesic_path_statistics::query_seconds})
         keep_min(row.phases.*f, s.*f);
     }
   }
@@ -153,8 +154,9 @@ int main(int argc, char** argv)
   std::printf("Geodesic vs square-pattern paths (paper figure 2): k = 30, v = 2, r = 4d, sigma_s = sigma_r = 0.4,\n"
               "Gaussian noise seed 1; times: minimum of %d run(s)\n\n",
               repetitions);
-  std::printf("| model | faces | noisy E_n | threads | strategy | path nodes | direct fallbacks | paths (s) | total (s) "
-              "| total / square | E_n (deg) | E_v |\n");
+  std::printf(
+      "| model | faces | noisy E_n | threads | strategy | path nodes | direct fallbacks | paths (s) | total (s) "
+      "| total / square | E_n (deg) | E_v |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for(const Model& m : models)
   {
@@ -175,8 +177,8 @@ int main(int argc, char** argv)
       std::fflush(stdout);
     };
     {
-      const Row square = run<CGAL::Sequential_tag>(m.reference, noisy, PMP::Intrinsic_path_strategy::SQUARE_PATTERN,
-                                                   repetitions);
+      const Row square =
+          run<CGAL::Sequential_tag>(m.reference, noisy, PMP::Intrinsic_path_strategy::SQUARE_PATTERN, repetitions);
       const Row geodesic =
           run<CGAL::Sequential_tag>(m.reference, noisy, PMP::Intrinsic_path_strategy::GEODESIC, repetitions);
       print("1", square, geodesic);
@@ -192,10 +194,11 @@ int main(int argc, char** argv)
     }
 #endif
   }
-  std::printf("\nWhere the geodesic path time goes, 1 thread (runs with time_phases, minimum of each phase; seconds):\n\n"
-              "| model | paths | patch copies | CGAL tree construction | CGAL tree deletion | CGAL queries | other "
-              "| CGAL total | square total | square paths | CGAL floor of the ratio |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "\nWhere the geodesic path time goes, 1 thread (runs with time_phases, minimum of each phase; seconds):\n\n"
+      "| model | paths | patch copies | CGAL tree construction | CGAL tree deletion | CGAL queries | other "
+      "| CGAL total | square total | square paths | CGAL floor of the ratio |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n");
   for(const Phases& p : phases)
   {
     const D::Geodesic_path_statistics& s = p.geodesic.phases;

@@ -33,13 +33,13 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-static TriMesh to_openmesh(const Mesh &m)
+static TriMesh to_openmesh(const Mesh& m)
 {
   TriMesh t;
   std::vector<TriMesh::VertexHandle> handles;
   for(auto v : vertices(m))
   {
-    const K::Point_3 &p = m.point(v);
+    const K::Point_3& p = m.point(v);
     handles.push_back(t.add_vertex(TriMesh::Point(p.x(), p.y(), p.z())));
   }
   for(auto f : faces(m))
@@ -55,7 +55,7 @@ static TriMesh to_openmesh(const Mesh &m)
 // the best of --grid on this input
 static const double grid_lambda = 1., grid_eta = 1., grid_mu = 0.35;
 
-int main(int argc, char **argv)
+int main(int argc, char** argv)
 {
   const bool row_only = argc > 1 && std::string(argv[1]) == "--row";
   Mesh reference;
@@ -67,8 +67,7 @@ int main(int argc, char **argv)
   Mesh noisy = reference;
   PMP::add_gaussian_noise(noisy, 0.3, CGAL::parameters::random_seed(1));
   SDFilter::MeshDenoisingParameters param; // the library's defaults, then the grid's best
-  const auto run = [&noisy](const SDFilter::MeshDenoisingParameters &p, Mesh &r)
-  {
+  const auto run = [&noisy](const SDFilter::MeshDenoisingParameters& p, Mesh& r) {
     TriMesh mesh = to_openmesh(noisy);
     Eigen::Vector3d center;
     double scale;
@@ -80,7 +79,7 @@ int main(int argc, char **argv)
     r = noisy;
     for(auto v : vertices(r))
     {
-      const TriMesh::Point &q = out.point(TriMesh::VertexHandle(int(std::size_t(v))));
+      const TriMesh::Point& q = out.point(TriMesh::VertexHandle(int(std::size_t(v))));
       r.point(v) = K::Point_3(q[0], q[1], q[2]);
     }
     return ok;
@@ -97,7 +96,7 @@ int main(int argc, char **argv)
           p.eta = eta;
           p.mu = p.nu = mu;
           std::ostringstream silence;
-          std::streambuf *const saved = std::cout.rdbuf(silence.rdbuf());
+          std::streambuf* const saved = std::cout.rdbuf(silence.rdbuf());
           Mesh r;
           const bool ok = run(p, r);
           std::cout.rdbuf(saved);
@@ -129,7 +128,7 @@ int main(int argc, char **argv)
     {
       // the timed part: conversion to OpenMesh and back included
       std::ostringstream silence; // the library reports progress on std::cout
-      std::streambuf *const saved = std::cout.rdbuf(silence.rdbuf());
+      std::streambuf* const saved = std::cout.rdbuf(silence.rdbuf());
       const std::clock_t c0 = std::clock();
       const auto t0 = std::chrono::steady_clock::now();
       Mesh r;

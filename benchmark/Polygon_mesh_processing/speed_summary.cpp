@@ -1,4 +1,4 @@
-// Speed summary of the intrinsic denoiser (issue 5), printed as Markdown
+// Speed summary of the intrinsic denoiser, printed as Markdown
 // tables; every row is measured in this run.
 //
 // 1. Methods on seeded noisy fandisk (sigma_E 0.3, seed 1), 1 and 2 threads:
@@ -63,7 +63,8 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace D = PMP::internal::Denoising;
 
-template <typename F> static double seconds(const F &f, int repeat = 1)
+template <typename F>
+static double seconds(const F& f, int repeat = 1)
 {
   double best = 1e30;
   for(int r = 0; r < repeat; ++r)
@@ -80,15 +81,15 @@ struct Row
   double flat, reorder, neighborhoods, paths, pass, update, whole, En, mean_neighbors, max_neighbors;
 };
 
-template <typename Tag> static Row measure(const Mesh &noisy, const Mesh &reference, unsigned int k)
+template <typename Tag>
+static Row measure(const Mesh& noisy, const Mesh& reference, unsigned int k)
 {
   Row row;
   const int rep = num_faces(noisy) < 100000 ? 5 : 1;
   D::Flat_mesh m;
   D::Face_data fd;
   row.flat = seconds(
-      [&]
-      {
+      [&] {
         m = D::make_flat_mesh(noisy, get(CGAL::vertex_point, noisy), get(CGAL::vertex_index, noisy),
                               get(CGAL::face_index, noisy), "speed_summary");
         D::compute_face_data<Tag>(m, m.points, fd);
@@ -103,15 +104,15 @@ template <typename Tag> static Row measure(const Mesh &noisy, const Mesh &refere
   for(std::size_t f = 0; f < m.number_of_faces(); ++f)
     row.max_neighbors = (std::max)(row.max_neighbors, double(nb.end(f) - nb.begin(f)));
   D::Path_forest forest;
-  row.paths = seconds([&] { forest = D::square_pattern_paths<Tag>(m, fd, nb, D::square_pattern_compact_min_nodes_for_filter()); }, rep);
+  row.paths = seconds(
+      [&] { forest = D::square_pattern_paths<Tag>(m, fd, nb, D::square_pattern_compact_min_nodes_for_filter()); }, rep);
   D::Intrinsic_kernel kernel;
   std::vector<D::Vec3> out, points = m.points, c, next;
   row.pass = seconds([&] { D::intrinsic_filter_pass<Tag>(forest, fd.normals, fd.areas, kernel, out); }, rep);
   row.update = seconds([&] { D::update_vertices<Tag>(m, points, out, {}, 2, c, next); }, rep);
   Mesh result;
   row.whole = seconds(
-      [&]
-      {
+      [&] {
         result = noisy;
         PMP::intrinsic_denoising<Tag>(result, CGAL::parameters::number_of_iterations(k).automatic_parameters(false));
       },
@@ -123,7 +124,7 @@ template <typename Tag> static Row measure(const Mesh &noisy, const Mesh &refere
 // --fast-grid: whole denoise of noisy fandisk (sigma_E 0.3, seed 1) with 2
 // threads over a grid of settings; prints every setting with its time (best
 // of 2, the mesh copy included) and E_n, fastest first, for choosing the documented fast settings.
-static int fast_grid(const Mesh &fandisk)
+static int fast_grid(const Mesh& fandisk)
 {
   Mesh noisy = fandisk;
   PMP::add_gaussian_noise(noisy, 0.3, CGAL::parameters::random_seed(1));
@@ -146,8 +147,7 @@ static int fast_grid(const Mesh &fandisk)
         for(unsigned int v : {1u, 2u, 3u, 5u})
         {
           Mesh result;
-          const auto run = [&]
-          {
+          const auto run = [&] {
             result = noisy;
             PMP::intrinsic_denoising<Tag>(result, CGAL::parameters::number_of_iterations(k)
                                                       .vertex_iterations(v)
@@ -160,10 +160,10 @@ static int fast_grid(const Mesh &fandisk)
           entries.push_back({r, sigma, k, v, sec, En});
           std::fprintf(stderr, "r=%gd sigma=%.2f k=%u v=%u: %.4f s, E_n %.3f\n", r, sigma, k, v, sec, En);
         }
-  std::sort(entries.begin(), entries.end(), [](const Entry &a, const Entry &b) { return a.sec < b.sec; });
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.sec < b.sec; });
   double best_En = 1e30;
   std::printf("| r (d) | sigma_s = sigma_r | k | v | seconds (2 threads) | E_n (deg) |\n|---|---|---|---|---|---|\n");
-  for(const Entry &e : entries)
+  for(const Entry& e : entries)
     if(e.En < best_En) // the Pareto front: no faster setting is as accurate
     {
       best_En = e.En;
@@ -175,7 +175,7 @@ static int fast_grid(const Mesh &fandisk)
 // The two fast settings of the manual (found by --fast-grid).
 struct Fast_setting
 {
-  const char *name;
+  const char* name;
   double relative_radius, sigma;
   unsigned int k, v;
 };
@@ -189,7 +189,7 @@ static double process_peak_mib()
   return double(u.ru_maxrss) / 1024.; // kilobytes on Linux
 }
 
-static double status_mib(const char *key)
+static double status_mib(const char* key)
 {
   std::ifstream status("/proc/self/status");
   std::string line;
@@ -200,7 +200,7 @@ static double status_mib(const char *key)
   return 0.;
 }
 
-static bool read_mesh(const char *name, Mesh &m)
+static bool read_mesh(const char* name, Mesh& m)
 {
   if(!CGAL::IO::read_polygon_mesh(CGAL::data_file_path(name), m) || m.is_empty())
   {
@@ -219,7 +219,7 @@ struct Input
 
 // The input of size index i (0: fandisk, 1: bunny00, 2, 3: bunny00 with 1, 2
 // Loop steps); false if unreadable.
-static bool make_input(int i, Input &in)
+static bool make_input(int i, Input& in)
 {
   if(i == 0)
   {
@@ -238,7 +238,7 @@ static bool make_input(int i, Input &in)
 }
 static const int number_of_sizes = 4;
 
-static Mesh noisy_copy(const Mesh &reference)
+static Mesh noisy_copy(const Mesh& reference)
 {
   Mesh noisy = reference;
   PMP::add_gaussian_noise(noisy, 0.3, CGAL::parameters::random_seed(1));
@@ -251,8 +251,7 @@ static int size_rows(int i)
   if(!make_input(i, in))
     return 1;
   const Mesh noisy = noisy_copy(in.reference);
-  auto print = [&](const char *threads, const Row &r)
-  {
+  auto print = [&](const char* threads, const Row& r) {
     std::printf(
         "| %s | %zu | %s | %.4f | %.4f | %.4f | %.1f, %.0f | %.4f | %.4f | %.5f | %.3f | %u | %.3e | %.3f | %.0f |\n",
         in.name.c_str(), (std::size_t)num_faces(noisy), threads, r.flat, r.reorder, r.neighborhoods, r.mean_neighbors,
@@ -281,16 +280,16 @@ static int memory_row(int i)
     std::ofstream reset("/proc/self/clear_refs");
     reset << "5";
   } // resets VmHWM to the current size
-  const double t = seconds(
-      [&]
-      {
+  const double t = seconds([&] {
 #ifdef CGAL_LINKED_WITH_TBB
-        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-        PMP::intrinsic_denoising<CGAL::Parallel_tag>(mesh, CGAL::parameters::number_of_iterations(in.k).automatic_parameters(false));
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+    PMP::intrinsic_denoising<CGAL::Parallel_tag>(
+        mesh, CGAL::parameters::number_of_iterations(in.k).automatic_parameters(false));
 #else
-        PMP::intrinsic_denoising<CGAL::Sequential_tag>(mesh, CGAL::parameters::number_of_iterations(in.k).automatic_parameters(false));
+    PMP::intrinsic_denoising<CGAL::Sequential_tag>(
+        mesh, CGAL::parameters::number_of_iterations(in.k).automatic_parameters(false));
 #endif
-      });
+  });
   std::printf("| %s | %zu | %u | %.3f | %.0f | %.0f | %.0f | %.0f |\n", in.name.c_str(), (std::size_t)num_faces(mesh),
               in.k, t, before, status_mib("VmHWM:"), status_mib("VmHWM:") - before, process_peak_mib());
   std::fflush(stdout);
@@ -322,14 +321,15 @@ static int family_row(int i)
   }
   Mesh result;
   const double t = seconds(
-      [&]
-      {
+      [&] {
         result = noisy;
 #ifdef CGAL_LINKED_WITH_TBB
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-        PMP::intrinsic_denoising<CGAL::Parallel_tag>(result, CGAL::parameters::number_of_iterations(k).automatic_parameters(false));
+        PMP::intrinsic_denoising<CGAL::Parallel_tag>(
+            result, CGAL::parameters::number_of_iterations(k).automatic_parameters(false));
 #else
-        PMP::intrinsic_denoising<CGAL::Sequential_tag>(result, CGAL::parameters::number_of_iterations(k).automatic_parameters(false));
+        PMP::intrinsic_denoising<CGAL::Sequential_tag>(
+            result, CGAL::parameters::number_of_iterations(k).automatic_parameters(false));
 #endif
       },
       n < 200000 ? 3 : 2);
@@ -341,7 +341,8 @@ static int family_row(int i)
 }
 
 // Wall and CPU seconds of f (best wall of `repeat` runs, CPU of that run).
-template <typename F> static std::pair<double, double> wall_and_cpu(const F &f, int repeat)
+template <typename F>
+static std::pair<double, double> wall_and_cpu(const F& f, int repeat)
 {
   std::pair<double, double> best(1e30, 0.);
   for(int r = 0; r < repeat; ++r)
@@ -356,7 +357,7 @@ template <typename F> static std::pair<double, double> wall_and_cpu(const F &f, 
   return best;
 }
 
-static void methods_table(const std::string &self)
+static void methods_table(const std::string& self)
 {
   Mesh reference;
   if(!read_mesh("meshes/fandisk.off", reference))
@@ -365,8 +366,7 @@ static void methods_table(const std::string &self)
   std::printf(
       "| method (fandisk, sigma_E 0.3, seed 1) | parameters | threads | seconds (wall, best of 5) | CPU seconds | "
       "E_n (deg) |\n|---|---|---|---|---|---|\n");
-  auto row = [&](const char *name, const std::string &params, auto &&run)
-  {
+  auto row = [&](const char* name, const std::string& params, auto&& run) {
     for(int threads = 1; threads <= 2; ++threads)
     {
       Mesh result;
@@ -378,8 +378,7 @@ static void methods_table(const std::string &self)
         break;
 #endif
       t = wall_and_cpu(
-          [&]
-          {
+          [&] {
             result = noisy;
             run(result, threads);
           },
@@ -395,51 +394,43 @@ static void methods_table(const std::string &self)
   typedef CGAL::Sequential_tag Par;
 #endif
   row("intrinsic_denoising", "fixed defaults (automatic_parameters(false): r 4d, sigma 0.4, k 30, v 2)",
-      [](Mesh &m, int threads)
-      {
+      [](Mesh& m, int threads) {
         const auto np = CGAL::parameters::automatic_parameters(false);
         if(threads == 1)
           PMP::intrinsic_denoising<CGAL::Sequential_tag>(m, np);
         else
           PMP::intrinsic_denoising<Par>(m, np);
       });
-  row("intrinsic_denoising", "automatic (the default; noise estimate, stopping rule)",
-      [](Mesh &m, int threads)
-      {
-        if(threads == 1)
-          PMP::intrinsic_denoising<CGAL::Sequential_tag>(m);
-        else
-          PMP::intrinsic_denoising<Par>(m);
-      });
-  for(const Fast_setting &f : fast_settings)
+  row("intrinsic_denoising", "automatic (the default; noise estimate, stopping rule)", [](Mesh& m, int threads) {
+    if(threads == 1)
+      PMP::intrinsic_denoising<CGAL::Sequential_tag>(m);
+    else
+      PMP::intrinsic_denoising<Par>(m);
+  });
+  for(const Fast_setting& f : fast_settings)
   {
     char params[128];
     std::snprintf(params, sizeof params, "r %gd, sigma %.2f, k %u, v %u", f.relative_radius, f.sigma, f.k, f.v);
-    row(f.name, params,
-        [&f](Mesh &m, int threads)
-        {
-          const auto np = CGAL::parameters::relative_neighbor_radius(f.relative_radius)
-                              .sigma_spatial(f.sigma)
-                              .sigma_range(f.sigma)
-                              .number_of_iterations(f.k)
-                              .vertex_iterations(f.v);
-          if(threads == 1)
-            PMP::intrinsic_denoising<CGAL::Sequential_tag>(m, np);
-          else
-            PMP::intrinsic_denoising<Par>(m, np);
-        });
+    row(f.name, params, [&f](Mesh& m, int threads) {
+      const auto np = CGAL::parameters::relative_neighbor_radius(f.relative_radius)
+                          .sigma_spatial(f.sigma)
+                          .sigma_range(f.sigma)
+                          .number_of_iterations(f.k)
+                          .vertex_iterations(f.v);
+      if(threads == 1)
+        PMP::intrinsic_denoising<CGAL::Sequential_tag>(m, np);
+      else
+        PMP::intrinsic_denoising<Par>(m, np);
+    });
   }
-  row("SRML07 (fast_feature_preserving_denoising)", "defaults (T 0.5, k 20, v 10)",
-      [](Mesh &m, int threads)
-      {
-        if(threads == 1)
-          PMP::fast_feature_preserving_denoising<CGAL::Sequential_tag>(m);
-        else
-          PMP::fast_feature_preserving_denoising<Par>(m);
-      });
+  row("SRML07 (fast_feature_preserving_denoising)", "defaults (T 0.5, k 20, v 10)", [](Mesh& m, int threads) {
+    if(threads == 1)
+      PMP::fast_feature_preserving_denoising<CGAL::Sequential_tag>(m);
+    else
+      PMP::fast_feature_preserving_denoising<Par>(m);
+  });
   row("ZFAT11 (bilateral_normal_denoising)", "defaults (sigma_s d, sigma_r 0.35, k 20, v 10)",
-      [](Mesh &m, int threads)
-      {
+      [](Mesh& m, int threads) {
         if(threads == 1)
           PMP::bilateral_normal_denoising<CGAL::Sequential_tag>(m);
         else
@@ -459,7 +450,7 @@ static void methods_table(const std::string &self)
   std::fflush(stdout);
 }
 
-int main(int argc, char **argv)
+int main(int argc, char** argv)
 {
   const std::string self = argv[0];
   if(argc > 2 && std::string(argv[1]) == "--size")

@@ -58,8 +58,7 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-namespace
-{
+namespace {
 
 struct Model
 {
@@ -78,8 +77,8 @@ typedef std::vector<double> Setting;
 struct Method
 {
   std::string name;
-  std::function<void(Mesh &, const Setting &)> run;
-  std::function<std::string(const Setting &)> describe;
+  std::function<void(Mesh&, const Setting&)> run;
+  std::function<std::string(const Setting&)> describe;
   std::vector<Setting> grid, large_grid; // large_grid: for the bunny
 };
 
@@ -91,13 +90,13 @@ struct Result
 };
 
 // the cartesian product of per-parameter value lists
-std::vector<Setting> product(const std::vector<std::vector<double>> &values)
+std::vector<Setting> product(const std::vector<std::vector<double>>& values)
 {
   std::vector<Setting> out(1);
-  for(const auto &list : values)
+  for(const auto& list : values)
   {
     std::vector<Setting> next;
-    for(const Setting &s : out)
+    for(const Setting& s : out)
       for(double v : list)
       {
         next.push_back(s);
@@ -108,7 +107,7 @@ std::vector<Setting> product(const std::vector<std::vector<double>> &values)
   return out;
 }
 
-std::string format(const char *fmt, const Setting &s)
+std::string format(const char* fmt, const Setting& s)
 {
   char buf[256];
   switch(s.size())
@@ -132,10 +131,7 @@ std::string format(const char *fmt, const Setting &s)
   return buf;
 }
 
-unsigned u(double x)
-{
-  return unsigned(x + 0.5);
-}
+unsigned u(double x) { return unsigned(x + 0.5); }
 
 // The methods in the order of the paper's table, with their grids. Spatial
 // sigmas and radii of the classic methods are relative to the mesh (see each
@@ -146,16 +142,14 @@ std::vector<Method> make_methods()
   // FDC03: sigma_c (x mean edge length), sigma_s (x mean edge length; 0 = the
   // paper's adaptive choice), iterations
   m.push_back({"FDC03",
-               [](Mesh &mesh, const Setting &s)
-               {
+               [](Mesh& mesh, const Setting& s) {
                  auto np = CGAL::parameters::sigma_spatial(s[0]).number_of_iterations(u(s[2]));
                  if(s[1] > 0.)
                    PMP::bilateral_mesh_denoising(mesh, np.sigma_range(s[1]));
                  else
                    PMP::bilateral_mesh_denoising(mesh, np);
                },
-               [](const Setting &s)
-               {
+               [](const Setting& s) {
                  return s[1] > 0. ? format("sigma_c=%.2gl sigma_s=%.2gl iter=%.0f", s)
                                   : format("sigma_c=%.2gl sigma_s=adaptive(%.0f) iter=%.0f", s);
                },
@@ -163,63 +157,60 @@ std::vector<Method> make_methods()
                product({{0.7, 1.}, {0., 0.2, 0.3}, {2., 3.}})});
   // JDD03: sigma_f, sigma_g (x mean edge length)
   m.push_back({"JDD03",
-               [](Mesh &mesh, const Setting &s)
-               { PMP::non_iterative_denoising(mesh, CGAL::parameters::sigma_spatial(s[0]).sigma_range(s[1])); },
-               [](const Setting &s) { return format("sigma_f=%.2gl sigma_g=%.2gl", s); },
+               [](Mesh& mesh, const Setting& s) {
+                 PMP::non_iterative_denoising(mesh, CGAL::parameters::sigma_spatial(s[0]).sigma_range(s[1]));
+               },
+               [](const Setting& s) { return format("sigma_f=%.2gl sigma_g=%.2gl", s); },
                product({{1., 1.5, 2., 3., 4.}, {0.3, 0.5, 1., 2.}}), product({{1., 1.5, 2.}, {1., 2., 3.}})});
   // SRML07: T, n1 (normal iterations), n2 (vertex iterations)
   m.push_back({"SRML07",
-               [](Mesh &mesh, const Setting &s)
-               {
+               [](Mesh& mesh, const Setting& s) {
                  PMP::fast_feature_preserving_denoising(
                      mesh,
                      CGAL::parameters::normal_threshold(s[0]).number_of_iterations(u(s[1])).vertex_iterations(u(s[2])));
                },
-               [](const Setting &s) { return format("T=%.2g n1=%.0f n2=%.0f", s); },
+               [](const Setting& s) { return format("T=%.2g n1=%.0f n2=%.0f", s); },
                product({{0.3, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95}, {10., 20., 40., 80., 160.}, {10.}}),
                product({{0.3, 0.5, 0.7}, {5., 10., 20.}, {10.}})});
   // ZFAT11 (local): sigma_s (x d), sigma_r, iterations; 10 vertex iterations
   m.push_back({"ZFAT11",
-               [](Mesh &mesh, const Setting &s)
-               {
+               [](Mesh& mesh, const Setting& s) {
                  PMP::bilateral_normal_denoising(
                      mesh, CGAL::parameters::sigma_spatial(s[0]).sigma_range(s[1]).number_of_iterations(u(s[2])));
                },
-               [](const Setting &s) { return format("sigma_s=%.2gd sigma_r=%.2g iter=%.0f", s); },
+               [](const Setting& s) { return format("sigma_s=%.2gd sigma_r=%.2g iter=%.0f", s); },
                product({{1., 2.}, {0.2, 0.35, 0.5}, {10., 20., 40., 80., 160.}}),
                product({{1.}, {0.5, 0.7, 1.}, {5., 10., 20.}})});
   // HS13: lambda factor (lambda = c l^2 gamma), alpha factor
   m.push_back({"HS13",
-               [](Mesh &mesh, const Setting &s)
-               { PMP::l0_denoising(mesh, CGAL::parameters::l0_weight(s[0]).regularization_weight(s[1])); },
-               [](const Setting &s) { return format("lambda=%.3g l^2 gamma, alpha0=%.2g gamma", s); },
+               [](Mesh& mesh, const Setting& s) {
+                 PMP::l0_denoising(mesh, CGAL::parameters::l0_weight(s[0]).regularization_weight(s[1]));
+               },
+               [](const Setting& s) { return format("lambda=%.3g l^2 gamma, alpha0=%.2g gamma", s); },
                product({{0.03, 0.1, 0.3, 0.6, 1.15}, {0.1}}), product({{0.03, 0.1}, {0.1}})});
   // ZDZ15: radius (x d), sigma_r, iterations; sigma_s = d, 10 vertex iterations
   m.push_back({"ZDZ15",
-               [](Mesh &mesh, const Setting &s)
-               {
+               [](Mesh& mesh, const Setting& s) {
                  PMP::guided_normal_denoising(
                      mesh,
                      CGAL::parameters::relative_neighbor_radius(s[0]).sigma_range(s[1]).number_of_iterations(u(s[2])));
                },
-               [](const Setting &s) { return format("r=%.2gd sigma_r=%.2g iter=%.0f", s); },
+               [](const Setting& s) { return format("r=%.2gd sigma_r=%.2g iter=%.0f", s); },
                product({{2.}, {0.1, 0.2, 0.35, 0.5}, {10., 20., 40., 80., 160.}}),
                product({{2.}, {0.5, 0.7, 1.}, {3., 5., 10.}})});
   // ours (intrinsic_denoising, square-pattern paths): sigma_s = sigma_r, r (x d), k; v = 2
   m.push_back({"ours",
-               [](Mesh &mesh, const Setting &s)
-               {
+               [](Mesh& mesh, const Setting& s) {
                  PMP::intrinsic_denoising(mesh, CGAL::parameters::sigma_spatial(s[0])
                                                     .sigma_range(s[0])
                                                     .relative_neighbor_radius(s[1])
                                                     .number_of_iterations(u(s[2]))
                                                     .vertex_iterations(2));
                },
-               [](const Setting &s) { return format("sigma=%.2g r=%.2gd k=%.0f v=2", s); },
-               []
-               {
+               [](const Setting& s) { return format("sigma=%.2g r=%.2gd k=%.0f v=2", s); },
+               [] {
                  std::vector<Setting> g = product({{0.4, 0.5, 0.6, 0.8}, {4.}, {30.}});
-                 for(const Setting &s : product({{0.4, 0.5, 0.6, 0.8}, {5.}, {50., 75., 100., 150.}}))
+                 for(const Setting& s : product({{0.4, 0.5, 0.6, 0.8}, {5.}, {50., 75., 100., 150.}}))
                    g.push_back(s);
                  return g;
                }(),
@@ -227,7 +218,7 @@ std::vector<Method> make_methods()
   return m;
 }
 
-std::vector<std::string> split(const std::string &s)
+std::vector<std::string> split(const std::string& s)
 {
   std::vector<std::string> out;
   std::stringstream ss(s);
@@ -237,11 +228,11 @@ std::vector<std::string> split(const std::string &s)
   return out;
 }
 
-bool selected(const std::vector<std::string> &list, const std::string &name)
+bool selected(const std::vector<std::string>& list, const std::string& name)
 {
   if(list.empty())
     return true;
-  for(const std::string &s : list)
+  for(const std::string& s : list)
     if(s == name)
       return true;
   return false;
@@ -249,7 +240,7 @@ bool selected(const std::vector<std::string> &list, const std::string &name)
 
 } // namespace
 
-int main(int argc, char **argv)
+int main(int argc, char** argv)
 {
   std::string out_file, mesh_dir, report_dir;
   std::vector<std::string> model_list, method_list;
@@ -278,8 +269,7 @@ int main(int argc, char **argv)
 
   // the paper's Table 1: FDC03 JDD03 SRML07 ZFAT11 HS13 ZDZ15 ours
   std::vector<Model> models;
-  auto load = [](const char *file, Mesh &mesh)
-  {
+  auto load = [](const char* file, Mesh& mesh) {
     const std::string path = CGAL::data_file_path(file);
     if(!CGAL::IO::read_polygon_mesh(path, mesh) || mesh.is_empty())
     {
@@ -349,17 +339,17 @@ int main(int argc, char **argv)
   const auto start = std::chrono::steady_clock::now();
   for(std::size_t mi = 0; mi < models.size(); ++mi)
   {
-    const Model &model = models[mi];
+    const Model& model = models[mi];
     Mesh noisy = model.reference;
     PMP::add_gaussian_noise(noisy, model.sigma_E, CGAL::parameters::random_seed(1));
     noisy_En[mi] = PMP::face_normal_error(noisy, model.reference);
     noisy_Ev[mi] = PMP::vertex_position_error(noisy, model.reference);
     for(std::size_t k : method_index)
     {
-      const Method &method = all_methods[k];
-      const std::vector<Setting> &grid = model.large ? method.large_grid : method.grid;
-      Result &best = results[mi][k];
-      for(const Setting &s : grid)
+      const Method& method = all_methods[k];
+      const std::vector<Setting>& grid = model.large ? method.large_grid : method.grid;
+      Result& best = results[mi][k];
+      for(const Setting& s : grid)
       {
         Mesh out = noisy;
         const auto t0 = std::chrono::steady_clock::now();
@@ -385,7 +375,7 @@ int main(int argc, char **argv)
     }
     if(!mesh_dir.empty() || !report_dir.empty())
     {
-      std::vector<std::pair<std::string, const Result *>> shown; // noisy, methods, reference
+      std::vector<std::pair<std::string, const Result*>> shown; // noisy, methods, reference
       Result noisy_result, reference_result;
       noisy_result.En = noisy_En[mi];
       noisy_result.Ev = noisy_Ev[mi];
@@ -408,7 +398,7 @@ int main(int argc, char **argv)
       report.view_dir = model.view_dir;
       report.view_up = model.view_up;
       report.heat_max = model.heat_max;
-      for(const auto &item : shown)
+      for(const auto& item : shown)
       {
         report.entries.push_back(denoising_report::make_entry(item.first, item.second->output, &model.reference));
         report.entries.back().En = item.second->En;
@@ -457,7 +447,7 @@ int main(int argc, char **argv)
   md << "\n";
   for(std::size_t mi = 0; mi < models.size(); ++mi)
   {
-    const Model &model = models[mi];
+    const Model& model = models[mi];
     // best per row in bold
     double bestEn = 1e30, bestEv = 1e30;
     for(std::size_t k : method_index)
@@ -495,7 +485,8 @@ int main(int argc, char **argv)
     md << " |\n";
   }
 
-  md << "\n## The paper's Table 1 (same columns; its E_v scale differs from ours, see NOTES.md)\n\n";
+  md << "\n## The paper's Table 1 (same columns; E_v is in the model's length unit and the paper's models were scaled "
+        "differently, so compare its E_v only within a table)\n\n";
   md << "| Model | Error |";
   for(std::size_t k : method_index)
     md << " " << all_methods[k].name << " |";
@@ -503,7 +494,7 @@ int main(int argc, char **argv)
   for(std::size_t k = 0; k < method_index.size(); ++k)
     md << "---|";
   md << "\n";
-  for(const Model &model : models)
+  for(const Model& model : models)
   {
     md << "| " << model.name << " | E_n |";
     for(std::size_t k : method_index)
@@ -526,7 +517,7 @@ int main(int argc, char **argv)
   for(std::size_t mi = 0; mi < models.size(); ++mi)
     for(std::size_t k : method_index)
     {
-      const Method &method = all_methods[k];
+      const Method& method = all_methods[k];
       md << "| " << models[mi].name << " | " << method.name << " | " << method.describe(results[mi][k].setting) << " | "
          << (models[mi].large ? method.large_grid : method.grid).size() << " |\n";
     }

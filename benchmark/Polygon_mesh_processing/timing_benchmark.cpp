@@ -87,7 +87,8 @@ static void BM_square_pattern_paths(benchmark::State& state)
 {
   const Stages& s = stages();
   for(auto _ : state)
-    benchmark::DoNotOptimize(D::square_pattern_paths(s.mesh, s.faces, s.neighbors, D::square_pattern_compact_min_nodes_for_filter()));
+    benchmark::DoNotOptimize(
+        D::square_pattern_paths(s.mesh, s.faces, s.neighbors, D::square_pattern_compact_min_nodes_for_filter()));
 }
 
 template <typename Tag>

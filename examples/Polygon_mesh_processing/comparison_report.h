@@ -28,8 +28,7 @@
 #include <string>
 #include <vector>
 
-namespace denoising_report
-{
+namespace denoising_report {
 
 // one mesh of the page and its row of the table
 struct Entry
@@ -55,7 +54,8 @@ struct Report
 
 // The vertices and triangles of `mesh`; with `reference` (same faces), the
 // angle in degrees between each face normal and the reference's.
-template <typename Mesh> Entry make_entry(const std::string &label, const Mesh &mesh, const Mesh *reference = nullptr)
+template <typename Mesh>
+Entry make_entry(const std::string& label, const Mesh& mesh, const Mesh* reference = nullptr)
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   Entry e;
@@ -65,11 +65,10 @@ template <typename Mesh> Entry make_entry(const std::string &label, const Mesh &
   for(vertex_descriptor v : vertices(mesh))
   {
     number.emplace(v, std::uint32_t(number.size()));
-    const auto &p = get(vpm, v);
+    const auto& p = get(vpm, v);
     e.positions.insert(e.positions.end(), {float(p.x()), float(p.y()), float(p.z())});
   }
-  auto normals = [](const Mesh &m)
-  {
+  auto normals = [](const Mesh& m) {
     std::vector<std::array<double, 3>> out;
     const auto pm = get(CGAL::vertex_point, m);
     for(auto f : faces(m))
@@ -79,7 +78,7 @@ template <typename Mesh> Entry make_entry(const std::string &label, const Mesh &
       for(auto v : CGAL::vertices_around_face(halfedge(f, m), m))
         if(k < 3)
         {
-          const auto &p = get(pm, v);
+          const auto& p = get(pm, v);
           q[k++] = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
         }
       const double a[3] = {q[1][0] - q[0][0], q[1][1] - q[0][1], q[1][2] - q[0][2]};
@@ -108,13 +107,12 @@ template <typename Mesh> Entry make_entry(const std::string &label, const Mesh &
   return e;
 }
 
-namespace internal
-{
+namespace internal {
 
-inline std::string base64(const void *data, std::size_t bytes)
+inline std::string base64(const void* data, std::size_t bytes)
 {
-  static const char *digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  const unsigned char *s = static_cast<const unsigned char *>(data);
+  static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  const unsigned char* s = static_cast<const unsigned char*>(data);
   std::string out;
   out.reserve((bytes + 2) / 3 * 4);
   for(std::size_t i = 0; i < bytes; i += 3)
@@ -131,7 +129,7 @@ inline std::string base64(const void *data, std::size_t bytes)
 
 // per-face errors for the heat map, in hundredths of a degree (Uint16,
 // little-endian, base64): half the size of floats, finer than any colour step
-inline std::string centidegrees(const std::vector<float> &degrees)
+inline std::string centidegrees(const std::vector<float>& degrees)
 {
   std::vector<unsigned char> bytes;
   bytes.reserve(2 * degrees.size());
@@ -146,7 +144,7 @@ inline std::string centidegrees(const std::vector<float> &degrees)
 }
 
 // a JSON string (labels and titles are plain text)
-inline std::string quote(const std::string &s)
+inline std::string quote(const std::string& s)
 {
   std::string out = "\"";
   for(char c : s)
@@ -175,7 +173,7 @@ inline std::string number(double x)
   return buf;
 }
 
-inline bool read_file(const std::string &path, std::string &out)
+inline bool read_file(const std::string& path, std::string& out)
 {
   std::ifstream in(path, std::ios::binary);
   if(!in)
@@ -189,7 +187,7 @@ inline bool read_file(const std::string &path, std::string &out)
 } // namespace internal
 
 // FILE.csv for FILE.html
-inline std::string table_path(const std::string &html_path)
+inline std::string table_path(const std::string& html_path)
 {
   const std::size_t dot = html_path.rfind('.');
   const std::size_t slash = html_path.find_last_of("/\\");
@@ -202,7 +200,7 @@ inline std::string check_report_files()
 {
 #if defined(DENOISING_RENDER_DIR) && defined(DENOISING_THREE_JS)
   const std::string render_dir = DENOISING_RENDER_DIR, three_path = DENOISING_THREE_JS;
-  for(const std::string &f : {render_dir + "/report_template.html", render_dir + "/viewer.js"})
+  for(const std::string& f : {render_dir + "/report_template.html", render_dir + "/viewer.js"})
     if(!std::ifstream(f))
       return "report: cannot read the page part " + f;
   if(!std::ifstream(three_path))
@@ -215,7 +213,7 @@ inline std::string check_report_files()
 
 // Writes the page to `html_path` and the table to table_path(html_path).
 // Returns an empty string on success, else a one-line error.
-inline std::string write_report(const std::string &html_path, const Report &report)
+inline std::string write_report(const std::string& html_path, const Report& report)
 {
   const std::string missing = check_report_files();
   if(!missing.empty())
@@ -233,11 +231,11 @@ inline std::string write_report(const std::string &html_path, const Report &repo
     return "report: three.js build file " + three_path + " is missing: run `npm ci` in tools/render";
 
   // the JSON data: identical triangle lists are stored once
-  std::vector<const std::vector<std::uint32_t> *> lists;
+  std::vector<const std::vector<std::uint32_t>*> lists;
   std::ostringstream meshes;
   for(std::size_t i = 0; i < report.entries.size(); ++i)
   {
-    const Entry &e = report.entries[i];
+    const Entry& e = report.entries[i];
     std::size_t list = 0;
     while(list < lists.size() && *lists[list] != e.triangles)
       ++list;
@@ -263,11 +261,11 @@ inline std::string write_report(const std::string &html_path, const Report &repo
   csv << "label,E_n,E_v,seconds\n";
   for(std::size_t i = 0; i < report.entries.size(); ++i)
   {
-    const Entry &e = report.entries[i];
+    const Entry& e = report.entries[i];
     data << (i ? ",\n" : "") << "{\"label\":" << internal::quote(e.label) << ",\"E_n\":" << internal::number(e.En)
          << ",\"E_v\":" << internal::number(e.Ev) << ",\"seconds\":" << internal::number(e.seconds) << "}";
     std::string label = e.label;
-    for(char &c : label)
+    for(char& c : label)
       if(c == ',' || c == '\n')
         c = ' ';
     auto cell = [](double x) { return std::isfinite(x) ? internal::number(x) : std::string(); };
@@ -278,7 +276,7 @@ inline std::string write_report(const std::string &html_path, const Report &repo
   // paste the parts into the template's placeholders, found in the template
   // itself and replaced from the last one back, so pasted text is never searched
   const std::string data_text = data.str();
-  const std::pair<const char *, const std::string *> parts[] = {
+  const std::pair<const char*, const std::string*> parts[] = {
       {"@REPORT_DATA@", &data_text}, {"@THREE_MODULE@", &three}, {"@VIEWER_JS@", &viewer}};
   std::vector<std::pair<std::size_t, std::size_t>> at; // (position, part)
   for(std::size_t k = 0; k < 3; ++k)
@@ -290,7 +288,7 @@ inline std::string write_report(const std::string &html_path, const Report &repo
     at.emplace_back(pos, k);
   }
   std::sort(at.rbegin(), at.rend());
-  for(const auto &a : at)
+  for(const auto& a : at)
     page.replace(a.first, std::string(parts[a.second].first).size(), *parts[a.second].second);
 
   std::ofstream out(html_path, std::ios::binary);

@@ -44,15 +44,14 @@ namespace po = boost::program_options;
 namespace PMP = CGAL::Polygon_mesh_processing;
 typedef denoise_file::Mesh Mesh;
 
-namespace
-{
+namespace {
 
 const int exit_ok = 0, exit_input = 1, exit_usage = 2;
 
-int fail(int code, const std::string &message)
+int fail(int code, const std::string& message)
 {
   std::string line = message;
-  for(char &c : line)
+  for(char& c : line)
     if(c == '\n' || c == '\r')
       c = ' ';
   std::cerr << "denoise: " << (code == exit_usage ? "usage error: " : "error: ") << line
@@ -76,7 +75,7 @@ struct Settings
   double noise = 0., impulsive = 1.;
 };
 
-const char *const help_head = R"(NAME
+const char* const help_head = R"(NAME
     denoise - feature-preserving mesh denoising with the intrinsic filter
 
 SYNOPSIS
@@ -147,7 +146,7 @@ DESCRIPTION
 
 )";
 
-const char *const help_tail = R"(
+const char* const help_tail = R"(
 EXIT STATUS
     0   success
     1   bad input or I/O error: unreadable, truncated or malformed file, not a
@@ -178,7 +177,7 @@ SEE ALSO
     doc/Polygon_mesh_processing/ (the package manual), README.md
 )";
 
-po::options_description make_options(Settings &s)
+po::options_description make_options(Settings& s)
 {
   po::options_description general("", 80, 40);
   // clang-format off
@@ -283,9 +282,9 @@ struct Method_settings
   int debug_empty_mesh = -1; // hidden: the report's mesh of this number loses its vertices (tests the checker)
 };
 
-const char *const classic_methods[] = {"FDC03", "JDD03", "SRML07", "ZFAT11", "HS13", "ZDZ15"};
+const char* const classic_methods[] = {"FDC03", "JDD03", "SRML07", "ZFAT11", "HS13", "ZDZ15"};
 
-void add_method_options(po::options_description &options, po::options_description &hidden, Method_settings &m)
+void add_method_options(po::options_description& options, po::options_description& hidden, Method_settings& m)
 {
   // clang-format off
   options.add_options()
@@ -299,16 +298,16 @@ void add_method_options(po::options_description &options, po::options_descriptio
 }
 
 // A usage error for --method / --report, or an empty string.
-std::string check_method_options(const Method_settings &m, const po::variables_map &vm)
+std::string check_method_options(const Method_settings& m, const po::variables_map& vm)
 {
   if(m.method != "intrinsic" &&
      std::find(std::begin(classic_methods), std::end(classic_methods), m.method) == std::end(classic_methods))
     return "--method must be intrinsic, FDC03, JDD03, SRML07, ZFAT11, HS13 or ZDZ15, not '" + m.method + "'";
   if(m.method != "intrinsic")
-    for(const char *name : {"iterations", "vertex-iterations", "sigma-spatial", "sigma-range", "radius",
-                            "relative-radius", "spatial-exponent", "range-exponent", "paths", "geodesic-rings",
-                            "step-length", "self-weight", "no-fold-guard", "vertex-update", "fixed", "noise-level",
-                            "stop-when-converged"})
+    for(const char* name :
+        {"iterations", "vertex-iterations", "sigma-spatial", "sigma-range", "radius", "relative-radius",
+         "spatial-exponent", "range-exponent", "paths", "geodesic-rings", "step-length", "self-weight", "no-fold-guard",
+         "vertex-update", "fixed", "noise-level", "stop-when-converged"})
       if(vm.count(name) && !vm[name].defaulted())
         return std::string("--") + name + " applies to --method intrinsic only";
   if(vm.count("report") && denoise_file::extension(m.report) != "html")
@@ -318,7 +317,8 @@ std::string check_method_options(const Method_settings &m, const po::variables_m
 
 // Runs a classic method with its defaults; on failure `mesh` may be changed
 // and a one-line message is returned.
-template <typename ConcurrencyTag> std::string run_classic(Mesh &mesh, const std::string &method)
+template <typename ConcurrencyTag>
+std::string run_classic(Mesh& mesh, const std::string& method)
 {
   try
   {
@@ -335,7 +335,7 @@ template <typename ConcurrencyTag> std::string run_classic(Mesh &mesh, const std
     else
       PMP::guided_normal_denoising<ConcurrencyTag>(mesh);
   }
-  catch(const std::exception &e)
+  catch(const std::exception& e)
   {
     return e.what();
   }
@@ -343,8 +343,8 @@ template <typename ConcurrencyTag> std::string run_classic(Mesh &mesh, const std
 }
 
 // The comparison page of this run: input, result and (if given) reference.
-std::string write_cli_report(const Method_settings &m, const std::string &input_name, bool noisy, const Mesh &input,
-                             const Mesh &denoised, const Mesh *reference, double seconds)
+std::string write_cli_report(const Method_settings& m, const std::string& input_name, bool noisy, const Mesh& input,
+                             const Mesh& denoised, const Mesh* reference, double seconds)
 {
   namespace R = denoising_report;
   R::Report report;
@@ -361,7 +361,7 @@ std::string write_cli_report(const Method_settings &m, const std::string &input_
       report.entries[1].En = PMP::face_normal_error(denoised, *reference);
       report.entries[1].Ev = PMP::vertex_position_error(denoised, *reference);
     }
-    catch(const std::exception &e)
+    catch(const std::exception& e)
     {
       return std::string("cannot compare with the reference: ") + e.what();
     }
@@ -378,18 +378,18 @@ std::string write_cli_report(const Method_settings &m, const std::string &input_
 // that the automatic mode chooses the others.
 struct Intrinsic_run
 {
-  Mesh &mesh;
-  const Settings &s;
-  const po::variables_map &vm;
+  Mesh& mesh;
+  const Settings& s;
+  const po::variables_map& vm;
   PMP::Intrinsic_denoising_report report;
   std::string problem;
 };
 
 template <int stage, typename NamedParameters>
-void run_intrinsic(Intrinsic_run &run, const NamedParameters &np)
+void run_intrinsic(Intrinsic_run& run, const NamedParameters& np)
 {
-  const Settings &s = run.s;
-  auto given = [&](const char *name) { return run.vm.count(name) > 0; };
+  const Settings& s = run.s;
+  auto given = [&](const char* name) { return run.vm.count(name) > 0; };
   if constexpr(stage == 0)
   {
     if(given("iterations"))
@@ -435,14 +435,11 @@ void run_intrinsic(Intrinsic_run &run, const NamedParameters &np)
   }
 }
 
-bool positive_finite(double x)
-{
-  return std::isfinite(x) && x > 0.;
-}
+bool positive_finite(double x) { return std::isfinite(x) && x > 0.; }
 
 } // namespace
 
-int main(int argc, char **argv)
+int main(int argc, char** argv)
 {
   Settings s;
   po::options_description options = make_options(s);
@@ -460,7 +457,7 @@ int main(int argc, char **argv)
     po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
     po::notify(vm);
   }
-  catch(const po::error &e)
+  catch(const po::error& e)
   {
     return fail(exit_usage, e.what());
   }
@@ -559,7 +556,7 @@ int main(int argc, char **argv)
       else
         PMP::add_gaussian_noise(input, s.noise, CGAL::parameters::random_seed(static_cast<unsigned int>(s.seed)));
     }
-    catch(const std::exception &e)
+    catch(const std::exception& e)
     {
       return fail(exit_input, e.what());
     }
@@ -589,21 +586,21 @@ int main(int argc, char **argv)
   // automatic mode unless the iterations are given) and the progress bar.
   Progress_bar bar(talk && (s.progress || ::isatty(STDERR_FILENO)));
   auto progress = [&bar](std::size_t done, std::size_t total) { bar(done, total); };
-  const bool stop = vm.count("stop-when-converged") ? s.stop_when_converged == "yes"
-                                                    : !s.fixed && !vm.count("iterations");
-  const auto np = CGAL::parameters::vertex_iterations(static_cast<unsigned int>(s.vertex_iterations))
-                      .spatial_exponent(s.spatial_exponent)
-                      .range_exponent(s.range_exponent)
-                      .path_strategy(strategy)
-                      .use_step_length(s.step_length)
-                      .geodesic_patch_rings(static_cast<unsigned int>(s.patch_rings))
-                      .include_self_weight(s.self_weight)
-                      .prevent_folds(!s.no_fold_guard)
-                      .vertex_update(s.vertex_update == "paper" ? PMP::Vertex_update::PAPER
-                                                                : PMP::Vertex_update::LEAST_SQUARES)
-                      .automatic_parameters(!s.fixed)
-                      .stop_when_converged(stop)
-                      .progress_callback(progress);
+  const bool stop =
+      vm.count("stop-when-converged") ? s.stop_when_converged == "yes" : !s.fixed && !vm.count("iterations");
+  const auto np =
+      CGAL::parameters::vertex_iterations(static_cast<unsigned int>(s.vertex_iterations))
+          .spatial_exponent(s.spatial_exponent)
+          .range_exponent(s.range_exponent)
+          .path_strategy(strategy)
+          .use_step_length(s.step_length)
+          .geodesic_patch_rings(static_cast<unsigned int>(s.patch_rings))
+          .include_self_weight(s.self_weight)
+          .prevent_folds(!s.no_fold_guard)
+          .vertex_update(s.vertex_update == "paper" ? PMP::Vertex_update::PAPER : PMP::Vertex_update::LEAST_SQUARES)
+          .automatic_parameters(!s.fixed)
+          .stop_when_converged(stop)
+          .progress_callback(progress);
   Mesh denoised = input;
   Intrinsic_run run{denoised, s, vm, PMP::Intrinsic_denoising_report(), std::string()};
   const auto start = std::chrono::steady_clock::now();
@@ -648,7 +645,7 @@ int main(int argc, char **argv)
       std::cout << "E_n (degrees): input " << en_in << ", denoised " << en_out << "\n";
       std::cout << "E_v: input " << ev_in << ", denoised " << ev_out << "\n";
     }
-    catch(const std::exception &e)
+    catch(const std::exception& e)
     {
       return fail(exit_input, std::string("cannot compare with the reference: ") + e.what());
     }

@@ -177,9 +177,7 @@ inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh
       double d;
       while(words >> CGAL::IO::iformat(d))
         entries.push_back(d);
-      auto is_index = [](double x, std::size_t bound) {
-        return x >= 0. && x < double(bound) && x == std::floor(x);
-      };
+      auto is_index = [](double x, std::size_t bound) { return x >= 0. && x < double(bound) && x == std::floor(x); };
       if(entries.empty() || !is_index(entries[0], nv + 1) || entries[0] < 3. ||
          entries.size() < 1 + std::size_t(entries[0]))
         return "malformed face " + std::to_string(i);
@@ -315,16 +313,18 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
           << k.flat_share << ", score " << k.score << "\n";
     }
     out << "noise kind: "
-        << (r.outlier_vertices > 0 ? "sparse: only the " + std::to_string(r.outlier_vertices) +
-                                         " outlier vertices were denoised"
-                                   : std::string("dense: every vertex denoised"))
+        << (r.outlier_vertices > 0
+                ? "sparse: only the " + std::to_string(r.outlier_vertices) + " outlier vertices were denoised"
+                : std::string("dense: every vertex denoised"))
         << " (residual correlation " << r.inlier_residual_correlation
         << " at the vertices within 3 robust deviations; sparse from 0.1)\n";
   }
   if(r.noise_level_estimated || r.noise_level > 0. || r.automatic_parameters)
     out << "noise level: " << r.noise_level << " x mean edge length ("
-        << (!r.candidates.empty() ? "residual RMS of the kept candidate"
-            : r.noise_level_estimated ? "estimated" : "given") << ")\n";
+        << (!r.candidates.empty()     ? "residual RMS of the kept candidate"
+            : r.noise_level_estimated ? "estimated"
+                                      : "given")
+        << ")\n";
   out << "sigma_s = " << r.sigma_spatial << ", sigma_r = " << r.sigma_range << "\n";
   out << "r = " << r.neighbor_radius << " (" << r.relative_neighbor_radius << " d), v_iter = " << r.vertex_iterations
       << "\n";
@@ -374,7 +374,7 @@ inline std::string write_mesh_file(const std::string& path, const Mesh& mesh, co
 // Writes `mesh` to `path` in the format of its extension (OFF, OBJ, PLY or
 // STL, 17 digits), atomically as write_mesh_file() does (temporary file in
 // the same directory, then a rename), never over `protect`.
-inline std::string write_mesh(const std::string &path, const Mesh &mesh, const std::string &protect = "")
+inline std::string write_mesh(const std::string& path, const Mesh& mesh, const std::string& protect = "")
 {
   const std::string ext = extension(path);
   if(ext == "off")
@@ -391,7 +391,7 @@ inline std::string write_mesh(const std::string &path, const Mesh &mesh, const s
   {
     ok = CGAL::IO::write_polygon_mesh(tmp, mesh, CGAL::parameters::stream_precision(17).verbose(false));
   }
-  catch(const std::exception &)
+  catch(const std::exception&)
   {
     ok = false;
   }

@@ -321,16 +321,27 @@ inline std::string read_stl_soup(std::istream& in, std::size_t byte_count, Soup&
 
 namespace readers {
 
-enum class Ply_type { INT8, UINT8, INT16, UINT16, INT32, UINT32, FLOAT32, FLOAT64, NONE };
+enum class Ply_type
+{
+  INT8,
+  UINT8,
+  INT16,
+  UINT16,
+  INT32,
+  UINT32,
+  FLOAT32,
+  FLOAT64,
+  NONE
+};
 
 inline Ply_type ply_type(const std::string& name)
 {
   static const std::pair<const char*, Ply_type> names[] = {
-      {"char", Ply_type::INT8},     {"int8", Ply_type::INT8},       {"uchar", Ply_type::UINT8},
-      {"uint8", Ply_type::UINT8},   {"short", Ply_type::INT16},     {"int16", Ply_type::INT16},
-      {"ushort", Ply_type::UINT16}, {"uint16", Ply_type::UINT16},   {"int", Ply_type::INT32},
-      {"int32", Ply_type::INT32},   {"uint", Ply_type::UINT32},     {"uint32", Ply_type::UINT32},
-      {"float", Ply_type::FLOAT32}, {"float32", Ply_type::FLOAT32}, {"double", Ply_type::FLOAT64},
+      {"char", Ply_type::INT8},      {"int8", Ply_type::INT8},       {"uchar", Ply_type::UINT8},
+      {"uint8", Ply_type::UINT8},    {"short", Ply_type::INT16},     {"int16", Ply_type::INT16},
+      {"ushort", Ply_type::UINT16},  {"uint16", Ply_type::UINT16},   {"int", Ply_type::INT32},
+      {"int32", Ply_type::INT32},    {"uint", Ply_type::UINT32},     {"uint32", Ply_type::UINT32},
+      {"float", Ply_type::FLOAT32},  {"float32", Ply_type::FLOAT32}, {"double", Ply_type::FLOAT64},
       {"float64", Ply_type::FLOAT64}};
   for(const auto& n : names)
     if(name == n.first)
@@ -343,14 +354,19 @@ inline std::size_t ply_size(Ply_type t)
   switch(t)
   {
   case Ply_type::INT8:
-  case Ply_type::UINT8: return 1;
+  case Ply_type::UINT8:
+    return 1;
   case Ply_type::INT16:
-  case Ply_type::UINT16: return 2;
+  case Ply_type::UINT16:
+    return 2;
   case Ply_type::INT32:
   case Ply_type::UINT32:
-  case Ply_type::FLOAT32: return 4;
-  case Ply_type::FLOAT64: return 8;
-  default: return 0;
+  case Ply_type::FLOAT32:
+    return 4;
+  case Ply_type::FLOAT64:
+    return 8;
+  default:
+    return 0;
   }
 }
 
@@ -408,15 +424,64 @@ struct Ply_body
         std::swap(b[i], b[n - 1 - i]);
     switch(t)
     {
-    case Ply_type::INT8: { std::int8_t v; std::memcpy(&v, b, 1); x = v; break; }
-    case Ply_type::UINT8: { std::uint8_t v; std::memcpy(&v, b, 1); x = v; break; }
-    case Ply_type::INT16: { std::int16_t v; std::memcpy(&v, b, 2); x = v; break; }
-    case Ply_type::UINT16: { std::uint16_t v; std::memcpy(&v, b, 2); x = v; break; }
-    case Ply_type::INT32: { std::int32_t v; std::memcpy(&v, b, 4); x = v; break; }
-    case Ply_type::UINT32: { std::uint32_t v; std::memcpy(&v, b, 4); x = v; break; }
-    case Ply_type::FLOAT32: { float v; std::memcpy(&v, b, 4); x = v; break; }
-    case Ply_type::FLOAT64: { double v; std::memcpy(&v, b, 8); x = v; break; }
-    default: return (fail = "unknown type"), false;
+    case Ply_type::INT8:
+    {
+      std::int8_t v;
+      std::memcpy(&v, b, 1);
+      x = v;
+      break;
+    }
+    case Ply_type::UINT8:
+    {
+      std::uint8_t v;
+      std::memcpy(&v, b, 1);
+      x = v;
+      break;
+    }
+    case Ply_type::INT16:
+    {
+      std::int16_t v;
+      std::memcpy(&v, b, 2);
+      x = v;
+      break;
+    }
+    case Ply_type::UINT16:
+    {
+      std::uint16_t v;
+      std::memcpy(&v, b, 2);
+      x = v;
+      break;
+    }
+    case Ply_type::INT32:
+    {
+      std::int32_t v;
+      std::memcpy(&v, b, 4);
+      x = v;
+      break;
+    }
+    case Ply_type::UINT32:
+    {
+      std::uint32_t v;
+      std::memcpy(&v, b, 4);
+      x = v;
+      break;
+    }
+    case Ply_type::FLOAT32:
+    {
+      float v;
+      std::memcpy(&v, b, 4);
+      x = v;
+      break;
+    }
+    case Ply_type::FLOAT64:
+    {
+      double v;
+      std::memcpy(&v, b, 8);
+      x = v;
+      break;
+    }
+    default:
+      return (fail = "unknown type"), false;
     }
     return true;
   }

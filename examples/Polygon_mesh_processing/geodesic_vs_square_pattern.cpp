@@ -55,8 +55,8 @@ int main(int argc, char** argv)
   {
     PMP::add_gaussian_noise(noisy, 0.3, CGAL::parameters::random_seed(1));
     std::cout << path << ": " << num_faces(noisy) << " faces, Gaussian noise sigma_E = 0.3 (seed 1): E_n "
-              << PMP::face_normal_error(noisy, reference) << " deg, E_v " << PMP::vertex_position_error(noisy, reference)
-              << "\n";
+              << PMP::face_normal_error(noisy, reference) << " deg, E_v "
+              << PMP::vertex_position_error(noisy, reference) << "\n";
     std::cout << "parameters: k = 30, v = 2, r = 4d, sigma_s = sigma_r = 0.4, Parallel_if_available_tag\n\n";
     denoising_report::Report report;
     report.title = path + ", noise sigma_E 0.3 (seed 1): exact geodesic paths against the square pattern "
@@ -68,17 +68,16 @@ int main(int argc, char** argv)
     for(const auto strategy : {PMP::Intrinsic_path_strategy::GEODESIC, PMP::Intrinsic_path_strategy::SQUARE_PATTERN})
     {
       const auto common = CGAL::parameters::path_strategy(strategy)
-                          .vertex_iterations(2)
-                          .relative_neighbor_radius(4.)
-                          .sigma_spatial(0.4)
-                          .sigma_range(0.4);
+                              .vertex_iterations(2)
+                              .relative_neighbor_radius(4.)
+                              .sigma_spatial(0.4)
+                              .sigma_range(0.4);
       const auto np = common.number_of_iterations(30);
       Mesh setup_only = noisy, denoised = noisy;
       const double t_paths = seconds([&] {
         PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(setup_only, common.number_of_iterations(0));
       });
-      const double t_total =
-          seconds([&] { PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(denoised, np); });
+      const double t_total = seconds([&] { PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(denoised, np); });
       const char* name = strategy == PMP::Intrinsic_path_strategy::GEODESIC ? "geodesic paths" : "square pattern";
       report.entries.push_back(denoising_report::make_entry(name, denoised, &reference));
       report.entries.back().En = PMP::face_normal_error(denoised, reference);
@@ -86,8 +85,8 @@ int main(int argc, char** argv)
       report.entries.back().seconds = t_total;
       std::printf("%-15s %10.3f %10.3e %12.2f %14.2f\n",
                   strategy == PMP::Intrinsic_path_strategy::GEODESIC ? "geodesic" : "square pattern",
-                  PMP::face_normal_error(denoised, reference), PMP::vertex_position_error(denoised, reference),
-                  t_paths, t_total - t_paths);
+                  PMP::face_normal_error(denoised, reference), PMP::vertex_position_error(denoised, reference), t_paths,
+                  t_total - t_paths);
     }
     if(argc > 2)
     {

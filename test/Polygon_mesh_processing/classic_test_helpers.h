@@ -1,4 +1,4 @@
-// Shared checks of the classic denoisers (issue 9): one test file per public
+// Shared checks of the classic denoisers: one test file per public
 // header calls them with its function and its measured bounds.
 
 #ifndef DENOISING_TEST_CLASSIC_TEST_HELPERS_H
@@ -20,15 +20,15 @@
 #include <cstdio>
 #include <vector>
 
-namespace classic_test
-{
+namespace classic_test {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef CGAL::Polyhedron_3<K> Polyhedron;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-template <typename M> std::vector<K::Point_3> positions(const M &mesh)
+template <typename M>
+std::vector<K::Point_3> positions(const M& mesh)
 {
   std::vector<K::Point_3> p;
   for(auto v : vertices(mesh))
@@ -36,7 +36,7 @@ template <typename M> std::vector<K::Point_3> positions(const M &mesh)
   return p;
 }
 
-inline double max_distance(const std::vector<K::Point_3> &a, const std::vector<K::Point_3> &b)
+inline double max_distance(const std::vector<K::Point_3>& a, const std::vector<K::Point_3>& b)
 {
   double d = 0;
   for(std::size_t i = 0; i < a.size(); ++i)
@@ -51,7 +51,8 @@ struct Errors
 
 // E_n of a 30 x 30 plane with Gaussian noise (sigma_E 0.3, seed 7), before and
 // after `denoise(mesh)`.
-template <typename Denoise> Errors noisy_plane(const char *name, const Denoise &denoise)
+template <typename Denoise>
+Errors noisy_plane(const char* name, const Denoise& denoise)
 {
   Mesh plane = denoising_test::plane_grid<Mesh>(30);
   const Mesh reference = plane;
@@ -64,7 +65,8 @@ template <typename Denoise> Errors noisy_plane(const char *name, const Denoise &
 }
 
 // E_n and E_v of a noise-free 12 x 12 cube after `denoise(mesh)`.
-template <typename Denoise> Errors noise_free_cube(const char *name, const Denoise &denoise)
+template <typename Denoise>
+Errors noise_free_cube(const char* name, const Denoise& denoise)
 {
   Mesh cube = denoising_test::cube<Mesh>(12);
   const Mesh reference = cube;
@@ -76,7 +78,8 @@ template <typename Denoise> Errors noise_free_cube(const char *name, const Denoi
 
 // The largest distance between the results on a Surface_mesh and on a
 // Polyhedron_3 of the same noisy graded octahedron.
-template <typename Denoise> double surface_mesh_vs_polyhedron(const Denoise &denoise)
+template <typename Denoise>
+double surface_mesh_vs_polyhedron(const Denoise& denoise)
 {
   Mesh sm = denoising_test::graded_octahedron<Mesh>(9, 1.4);
   Polyhedron poly = denoising_test::graded_octahedron<Polyhedron>(9, 1.4);
@@ -92,7 +95,8 @@ template <typename Denoise> double surface_mesh_vs_polyhedron(const Denoise &den
 
 // Pins every 7th vertex of a noisy plane; checks that they stay and that the
 // others move.
-template <typename Denoise> void constrained_vertices_do_not_move(const Denoise &denoise)
+template <typename Denoise>
+void constrained_vertices_do_not_move(const Denoise& denoise)
 {
   Mesh mesh = denoising_test::plane_grid<Mesh>(12);
   PMP::add_gaussian_noise(mesh, 0.3, CGAL::parameters::random_seed(2));
@@ -115,7 +119,7 @@ template <typename Denoise> void constrained_vertices_do_not_move(const Denoise 
 // Sequential_tag and Parallel_tag give the same positions on a noisy fandisk-
 // sized mesh (a graded octahedron of 8 x 33^2 faces, above the parallel grain).
 template <typename Sequential, typename Parallel>
-double parallel_vs_sequential(const Sequential &sequential, const Parallel &parallel)
+double parallel_vs_sequential(const Sequential& sequential, const Parallel& parallel)
 {
   Mesh a = denoising_test::graded_octahedron<Mesh>(33, 1.4);
   PMP::add_gaussian_noise(a, 0.3, CGAL::parameters::random_seed(5));

@@ -115,8 +115,8 @@ public:
   template <typename Mesh>
   Mesh to_mesh() const
   {
-    typedef typename boost::property_traits<
-        typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point;
+    typedef typename boost::property_traits<typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type
+        Point;
     std::vector<Point> pts;
     for(const P3& p : points)
       pts.emplace_back(p[0], p[1], p[2]);

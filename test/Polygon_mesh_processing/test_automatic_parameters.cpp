@@ -8,10 +8,10 @@
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
-#include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/noise_estimate.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/sparse_noise.h>
+#include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -180,7 +180,7 @@ TEST(AutomaticParameters, NoisyFandiskAutomaticMode)
   EXPECT_EQ(r.iterations, w.iterations);
   EXPECT_GT(r.neighbor_radius, 0.);
   EXPECT_EQ(r.stop_reason, PMP::Intrinsic_stop_reason::RESIDUAL_CORRELATED);
-  EXPECT_NEAR(r.noise_level, 0.3, 0.06); // the residual RMS of the kept candidate
+  EXPECT_NEAR(r.noise_level, 0.3, 0.06);                // the residual RMS of the kept candidate
   EXPECT_LT(PMP::face_normal_error(m, fandisk()), 2.6); // measured 2.525
 }
 
@@ -201,8 +201,8 @@ TEST(AutomaticParameters, RadiusFollowsTheNoiseLevel)
   PMP::add_gaussian_noise(m, 0.1, CGAL::parameters::random_seed(1));
   Mesh wide = m;
   const double s = D::automatic_choice(estimate(m)).kernel.sigma_spatial;
-  const auto r = PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(
-      m, CGAL::parameters::sigma_spatial(s).sigma_range(s));
+  const auto r =
+      PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(m, CGAL::parameters::sigma_spatial(s).sigma_range(s));
   EXPECT_TRUE(r.candidates.empty());
   EXPECT_NEAR(r.relative_neighbor_radius, 2. + 10. * r.noise_level, 1e-9);
   EXPECT_LT(r.relative_neighbor_radius, 3.2);
@@ -232,8 +232,11 @@ TEST(AutomaticParameters, ExplicitParametersOverride)
   // automatic_parameters(false): the fixed defaults, bitwise the old behaviour
   Mesh b = noisy, c = noisy;
   const auto rb = PMP::intrinsic_denoising(b, CGAL::parameters::automatic_parameters(false).number_of_iterations(5));
-  PMP::intrinsic_denoising(c, CGAL::parameters::sigma_spatial(0.4).sigma_range(0.4).relative_neighbor_radius(4.)
-                                  .number_of_iterations(5).automatic_parameters(false));
+  PMP::intrinsic_denoising(c, CGAL::parameters::sigma_spatial(0.4)
+                                  .sigma_range(0.4)
+                                  .relative_neighbor_radius(4.)
+                                  .number_of_iterations(5)
+                                  .automatic_parameters(false));
   EXPECT_EQ(rb.sigma_spatial, 0.4);
   EXPECT_EQ(rb.relative_neighbor_radius, 4.);
   for(auto v : vertices(b))
@@ -317,8 +320,10 @@ std::vector<double> candidate_errors(const Mesh& noisy, const Mesh& reference, c
     Mesh m = noisy;
     if(k.iterations > 0)
       PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(
-          m, CGAL::parameters::sigma_spatial(k.sigma).sigma_range(k.sigma)
-                 .relative_neighbor_radius(k.relative_neighbor_radius).number_of_iterations(k.iterations));
+          m, CGAL::parameters::sigma_spatial(k.sigma)
+                 .sigma_range(k.sigma)
+                 .relative_neighbor_radius(k.relative_neighbor_radius)
+                 .number_of_iterations(k.iterations));
     errors.push_back(PMP::face_normal_error(m, reference));
     if(c == r.chosen_candidate)
     {

@@ -50,21 +50,21 @@ namespace {
 // else a message naming the check that failed; the test fails with it. (CTest
 // runs every test in a process of its own, so there is no summary test: it
 // would run every case a second time.)
-#define BAD_INPUT_CASE(NAME)                                                                                          \
-  std::string NAME();                                                                                                 \
-  TEST(BadInputCorpus, NAME)                                                                                          \
-  {                                                                                                                   \
-    const std::string problem = NAME();                                                                               \
-    EXPECT_TRUE(problem.empty()) << problem;                                                                          \
-  }                                                                                                                   \
+#define BAD_INPUT_CASE(NAME)                                                                                           \
+  std::string NAME();                                                                                                  \
+  TEST(BadInputCorpus, NAME)                                                                                           \
+  {                                                                                                                    \
+    const std::string problem = NAME();                                                                                \
+    EXPECT_TRUE(problem.empty()) << problem;                                                                           \
+  }                                                                                                                    \
   std::string NAME()
 
 // Returns from the case with a message unless `cond`.
-#define REQUIRE(cond)                                                                                                 \
-  do                                                                                                                  \
-  {                                                                                                                   \
-    if(!(cond))                                                                                                       \
-      return std::string(__FILE__ ":") + std::to_string(__LINE__) + ": " #cond;                                       \
+#define REQUIRE(cond)                                                                                                  \
+  do                                                                                                                   \
+  {                                                                                                                    \
+    if(!(cond))                                                                                                        \
+      return std::string(__FILE__ ":") + std::to_string(__LINE__) + ": " #cond;                                        \
   } while(false)
 
 // ---- helpers ---------------------------------------------------------------
@@ -304,8 +304,9 @@ BAD_INPUT_CASE(BrokenIndexMapThrowsAndLeavesTheMeshUnchanged)
   const auto before = positions(m);
   REQUIRE(contains(invalid_argument_of([&] { PMP::intrinsic_denoising(m, CGAL::parameters::face_index_map(bad_fim)); }),
                    "face index map"));
-  REQUIRE(contains(invalid_argument_of([&] { PMP::add_gaussian_noise(m, 0.3, CGAL::parameters::vertex_index_map(bad_vim)); }),
-                   "vertex index map"));
+  REQUIRE(contains(
+      invalid_argument_of([&] { PMP::add_gaussian_noise(m, 0.3, CGAL::parameters::vertex_index_map(bad_vim)); }),
+      "vertex index map"));
   REQUIRE(same_positions(before, positions(m)));
   return "";
 }
@@ -500,8 +501,7 @@ BAD_INPUT_CASE(NeedleFacesProduceNoNaN)
 BAD_INPUT_CASE(SingleTriangleDoesNotMove)
 {
   Mesh m;
-  m.add_face(m.add_vertex(K::Point_3(0, 0, 0)), m.add_vertex(K::Point_3(1, 0, 0)),
-             m.add_vertex(K::Point_3(0, 1, 0.5)));
+  m.add_face(m.add_vertex(K::Point_3(0, 0, 0)), m.add_vertex(K::Point_3(1, 0, 0)), m.add_vertex(K::Point_3(0, 1, 0.5)));
   const auto before = positions(m);
   REQUIRE(invalid_argument_of([&] { PMP::intrinsic_denoising(m); }) == "<no exception>");
   double d = 0;
@@ -609,11 +609,13 @@ BAD_INPUT_CASE(InvalidParametersThrowAndLeaveEverythingUnchanged)
   const double nan = std::nan("");
   REQUIRE(contains(invalid_argument_of([&] { PMP::intrinsic_denoising(m, CGAL::parameters::sigma_range(0.)); }),
                    "sigma_range"));
-  REQUIRE(contains(invalid_argument_of(
-                       [&] { PMP::intrinsic_denoising(m, CGAL::parameters::neighbor_radius(nan).face_normal_map(fnm)); }),
+  REQUIRE(contains(invalid_argument_of([&] {
+                     PMP::intrinsic_denoising(m, CGAL::parameters::neighbor_radius(nan).face_normal_map(fnm));
+                   }),
                    "neighbor_radius"));
-  REQUIRE(contains(invalid_argument_of([&] { PMP::intrinsic_filter_face_normals(m, fnm, CGAL::parameters::sigma_spatial(-1.)); }),
-                   "sigma_spatial"));
+  REQUIRE(contains(
+      invalid_argument_of([&] { PMP::intrinsic_filter_face_normals(m, fnm, CGAL::parameters::sigma_spatial(-1.)); }),
+      "sigma_spatial"));
   REQUIRE(contains(invalid_argument_of([&] { PMP::add_gaussian_noise(m, -1.); }), "noise level"));
   REQUIRE(contains(invalid_argument_of([&] { PMP::add_impulsive_noise(m, 2., 0.3); }), "fraction"));
   REQUIRE(same_positions(before, positions(m)));
@@ -638,22 +640,23 @@ std::string read_off_text(const std::string& text, Mesh& m)
 BAD_INPUT_CASE(MalformedOffDataIsRejectedWithAOneLineMessage)
 {
   const char* bad[] = {
-      "",                                                          // empty file
-      "OFF\n",                                                     // header only
-      "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n",                         // truncated vertices
-      "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n",         // truncated faces
-      "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",                // index out of range
-      "OFF\n3 1 0\n0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n",             // not a number
-      "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n",               // negative face size
-      "OFF\n3 1 0\n0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n",              // NaN coordinate
-      "OFF\n3 1 0\n0 0 0\n1 0 0\ninf 1 0\n3 0 1 2\n",              // infinite coordinate
-      "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n",       // a quad
-      "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n",                         // no face
-      "OFF\n2000000000 1 0\n0 0 0\n",                              // absurd vertex count
-      "OFF\n3 2000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",       // absurd face count
-      "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n",                // repeated vertex in a face
-      "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n",  // absurd face size
-      "\x7f" "ELF\x02\x01\x01\x00 binary garbage",
+      "",                                                    // empty file
+      "OFF\n",                                               // header only
+      "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n",                   // truncated vertices
+      "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n",   // truncated faces
+      "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",          // index out of range
+      "OFF\n3 1 0\n0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n",       // not a number
+      "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n",         // negative face size
+      "OFF\n3 1 0\n0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n",        // NaN coordinate
+      "OFF\n3 1 0\n0 0 0\n1 0 0\ninf 1 0\n3 0 1 2\n",        // infinite coordinate
+      "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n", // a quad
+      "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n",                   // no face
+      "OFF\n2000000000 1 0\n0 0 0\n",                        // absurd vertex count
+      "OFF\n3 2000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", // absurd face count
+      "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n",          // repeated vertex in a face
+      "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n", // absurd face size
+      "\x7f"
+      "ELF\x02\x01\x01\x00 binary garbage",
   };
   for(const char* text : bad)
   {
@@ -672,8 +675,7 @@ BAD_INPUT_CASE(MalformedOffDataIsRejectedWithAOneLineMessage)
   // a non-manifold edge (three triangles on edge 0-1) is split by
   // orient_polygon_soup(): read, with the three faces
   Mesh split;
-  REQUIRE(read_off_text("OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n", split)
-              .empty());
+  REQUIRE(read_off_text("OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n", split).empty());
   REQUIRE(num_faces(split) == 3);
   return "";
 }
@@ -746,50 +748,51 @@ BAD_INPUT_CASE(MalformedObjPlyStlDataIsRejectedWithAOneLineMessage)
 {
   const float nan = std::nanf("");
   const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-  REQUIRE(check_rejected("obj", {"", "garbage\x7f\x01", tri,                 // no face
-                                 "v 0 0 0\nv 1 0 0\nf 1 2 3\n",              // truncated (index 3 missing)
-                                 tri + "f 1 2 7\n",                          // out of range
-                                 tri + "f 1 2 -9\n",                         // before the first vertex
-                                 tri + "f 1 2 0\n",                          // zero index
-                                 tri + "f 1 2 x\n",                          // not a number
-                                 "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n",   // NaN
-                                 "v 0 0 0\nv 1 inf 0\nv 0 1 0\nf 1 2 3\n",   // infinite
-                                 "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",       // two coordinates
-                                 tri + "f 1 2\n",                            // two vertices
-                                 tri + "f 1 2 99999999999999999999999\n",    // huge index
-                                 tri + "f 1 1 2\n"})                         // a vertex twice
+  REQUIRE(check_rejected("obj", {"", "garbage\x7f\x01", tri,               // no face
+                                 "v 0 0 0\nv 1 0 0\nf 1 2 3\n",            // truncated (index 3 missing)
+                                 tri + "f 1 2 7\n",                        // out of range
+                                 tri + "f 1 2 -9\n",                       // before the first vertex
+                                 tri + "f 1 2 0\n",                        // zero index
+                                 tri + "f 1 2 x\n",                        // not a number
+                                 "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n", // NaN
+                                 "v 0 0 0\nv 1 inf 0\nv 0 1 0\nf 1 2 3\n", // infinite
+                                 "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",     // two coordinates
+                                 tri + "f 1 2\n",                          // two vertices
+                                 tri + "f 1 2 99999999999999999999999\n",  // huge index
+                                 tri + "f 1 1 2\n"})                       // a vertex twice
               .empty());
   const std::string ply_body = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   REQUIRE(check_rejected("ply", {"", "ply\n", std::string("ply\nformat ascii 1.0\n") + "element vertex 3\n",
-                                 std::string(ply_header_ascii) + "0 0 0\n1 0 0\n",                  // truncated
-                                 std::string(ply_header_ascii) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",  // out of range
+                                 std::string(ply_header_ascii) + "0 0 0\n1 0 0\n",                    // truncated
+                                 std::string(ply_header_ascii) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",    // out of range
                                  std::string(ply_header_ascii) + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n",  // NaN
                                  std::string(ply_header_ascii) + "0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n", // not a number
                                  std::string(ply_header_ascii) + "0 0 0\n1 0 0\n0 1 0\n200 0 1 2\n",  // huge list
                                  std::string("ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\n"
                                              "property float y\nproperty float z\nend_header\n0 0 0\n"), // huge count
                                  std::string("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
-                                             "property float y\nend_header\n") + ply_body, // no z
-                                 std::string("ply\nformat ebcdic 1.0\nend_header\n"),         // unknown format
+                                             "property float y\nend_header\n") +
+                                     ply_body,                                        // no z
+                                 std::string("ply\nformat ebcdic 1.0\nend_header\n"), // unknown format
                                  std::string("ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
                                              "property float x\nproperty float y\nproperty float z\n"
                                              "end_header\n\x01\x02")}) // truncated binary
               .empty());
   const std::vector<std::array<float, 9>> one = {{0, 0, 0, 1, 0, 0, 0, 1, 0}};
   REQUIRE(check_rejected("stl", {"", "garbage bytes, neither ascii nor binary",
-                                 binary_stl(one, 2) + std::string(10, '\0'),       // announces 2, holds 1.2
-                                 binary_stl({{0, 0, 0, 1, 0, 0, 0, nan, 0}}, 1),   // NaN
+                                 binary_stl(one, 2) + std::string(10, '\0'),     // announces 2, holds 1.2
+                                 binary_stl({{0, 0, 0, 1, 0, 0, 0, nan, 0}}, 1), // NaN
                                  "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n", // truncated
                                  "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\n"
-                                 "endfacet\nendsolid x\n",                                             // two vertices
+                                 "endfacet\nendsolid x\n", // two vertices
                                  "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 inf 0\n"
-                                 "vertex 0 1 0\nendloop\nendfacet\nendsolid x\n"})                   // infinite
+                                 "vertex 0 1 0\nendloop\nendfacet\nendsolid x\n"}) // infinite
               .empty());
   // the messages name where: a line, an element, a triangle
   Mesh m;
   REQUIRE(contains(read_text(tri + "f 1 2 7\n", "obj", m), "line 4"));
-  REQUIRE(contains(read_text(std::string(ply_header_ascii) + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", "ply", m),
-                   "vertex 1"));
+  REQUIRE(
+      contains(read_text(std::string(ply_header_ascii) + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", "ply", m), "vertex 1"));
   REQUIRE(contains(read_text(binary_stl({{0, 0, 0, 1, 0, 0, 0, nan, 0}}, 1), "stl", m), "triangle 0"));
   return "";
 }
@@ -844,9 +847,8 @@ BAD_INPUT_CASE(ObjPlyStlReadTheSameMesh)
   // a degenerate triangle is dropped, with a warning
   triangles.push_back({0, 0, 0, 0, 0, 0, 1, 1, 0});
   const std::string stl_binary = binary_stl(triangles, 3);
-  const std::pair<const char*, std::string> files[] = {{"obj", obj},         {"ply", ply_ascii},
-                                                       {"ply", ply_big},     {"stl", stl_ascii},
-                                                       {"stl", stl_binary}};
+  const std::pair<const char*, std::string> files[] = {
+      {"obj", obj}, {"ply", ply_ascii}, {"ply", ply_big}, {"stl", stl_ascii}, {"stl", stl_binary}};
   for(const auto& file : files)
   {
     Mesh m;
@@ -872,8 +874,7 @@ BAD_INPUT_CASE(OffTrailingFacesAreCountedInAWarning)
 {
   Mesh m;
   std::vector<std::string> warnings;
-  REQUIRE(read_text("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n# end\n", "off", m, &warnings)
-              .empty());
+  REQUIRE(read_text("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n# end\n", "off", m, &warnings).empty());
   REQUIRE(num_faces(m) == 1);
   REQUIRE(warnings.size() == 1);
   REQUIRE(contains(warnings[0], "1 line after the 1 faces"));

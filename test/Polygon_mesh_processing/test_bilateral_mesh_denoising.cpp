@@ -10,7 +10,7 @@ using namespace classic_test;
 
 TEST(BilateralMeshDenoising, NoisyPlaneBecomesFlat)
 {
-  const Errors e = noisy_plane("FDC03", [](Mesh &m) { PMP::bilateral_mesh_denoising(m); });
+  const Errors e = noisy_plane("FDC03", [](Mesh& m) { PMP::bilateral_mesh_denoising(m); });
   EXPECT_GT(e.before, 15.);
   EXPECT_LT(e.after, e.before / 8.);
 }
@@ -28,8 +28,8 @@ TEST(BilateralMeshDenoising, NoiseFreeCubeKeepsItsEdgesWithASmallSigmaS)
 {
   Mesh cube = denoising_test::cube<Mesh>(12);
   const auto before = positions(cube);
-  const Errors e = noise_free_cube("FDC03 (sigma_s 0.1 l)", [](Mesh &m)
-                                   { PMP::bilateral_mesh_denoising(m, CGAL::parameters::sigma_range(0.1)); });
+  const Errors e = noise_free_cube(
+      "FDC03 (sigma_s 0.1 l)", [](Mesh& m) { PMP::bilateral_mesh_denoising(m, CGAL::parameters::sigma_range(0.1)); });
   EXPECT_LT(e.before, 2.0);
   EXPECT_LT(e.after, 9e-3);
   PMP::bilateral_mesh_denoising(cube, CGAL::parameters::sigma_range(0.1).number_of_iterations(1));
@@ -50,14 +50,14 @@ TEST(BilateralMeshDenoising, NoiseFreeCubeKeepsItsEdgesWithASmallSigmaS)
 
 TEST(BilateralMeshDenoising, NoiseFreeCubeWithAdaptiveSigmaSMeasured)
 {
-  const Errors e = noise_free_cube("FDC03", [](Mesh &m) { PMP::bilateral_mesh_denoising(m); });
+  const Errors e = noise_free_cube("FDC03", [](Mesh& m) { PMP::bilateral_mesh_denoising(m); });
   EXPECT_LT(e.before, 16.5);
   EXPECT_LT(e.after, 6.5e-2);
 }
 
 TEST(BilateralMeshDenoising, SurfaceMeshAndPolyhedronGiveTheSameResult)
 {
-  EXPECT_LE(surface_mesh_vs_polyhedron([](auto &m) { PMP::bilateral_mesh_denoising(m); }), 1e-12);
+  EXPECT_LE(surface_mesh_vs_polyhedron([](auto& m) { PMP::bilateral_mesh_denoising(m); }), 1e-12);
 }
 
 TEST(BilateralMeshDenoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
@@ -73,16 +73,16 @@ TEST(BilateralMeshDenoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
 
 TEST(BilateralMeshDenoising, ConstrainedVerticesDoNotMove)
 {
-  constrained_vertices_do_not_move(
-      [](Mesh &m, auto pinned)
-      { PMP::bilateral_mesh_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned)); });
+  constrained_vertices_do_not_move([](Mesh& m, auto pinned) {
+    PMP::bilateral_mesh_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned));
+  });
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
 TEST(BilateralMeshDenoising, ParallelEqualsSequential)
 {
-  EXPECT_EQ(parallel_vs_sequential([](Mesh &m) { PMP::bilateral_mesh_denoising<CGAL::Sequential_tag>(m); },
-                                   [](Mesh &m) { PMP::bilateral_mesh_denoising<CGAL::Parallel_tag>(m); }),
+  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::bilateral_mesh_denoising<CGAL::Sequential_tag>(m); },
+                                   [](Mesh& m) { PMP::bilateral_mesh_denoising<CGAL::Parallel_tag>(m); }),
             0.);
 }
 #endif

@@ -11,14 +11,14 @@ using namespace classic_test;
 
 TEST(BilateralNormalDenoising, NoisyPlaneBecomesFlat)
 {
-  const Errors e = noisy_plane("ZFAT11", [](Mesh &m) { PMP::bilateral_normal_denoising(m); });
+  const Errors e = noisy_plane("ZFAT11", [](Mesh& m) { PMP::bilateral_normal_denoising(m); });
   EXPECT_GT(e.before, 15.);
   EXPECT_LT(e.after, e.before / 10.);
 }
 
 TEST(BilateralNormalDenoising, NoiseFreeCubeKeepsItsEdges)
 {
-  const Errors e = noise_free_cube("ZFAT11", [](Mesh &m) { PMP::bilateral_normal_denoising(m); });
+  const Errors e = noise_free_cube("ZFAT11", [](Mesh& m) { PMP::bilateral_normal_denoising(m); });
   // Across an edge the range kernel weighs exp(-2 / 2 sigma_r^2) ~ 3e-4, not 0,
   // so over 20 passes the edges move a little: measured E_n 0.021 deg, E_v
   // 7.6e-5. A rounded edge would give degrees.
@@ -29,14 +29,15 @@ TEST(BilateralNormalDenoising, NoiseFreeCubeKeepsItsEdges)
 // With a radius, the neighbourhood is the geometric one of intrinsic_denoising().
 TEST(BilateralNormalDenoising, GeometricNeighborhoodOption)
 {
-  const Errors e = noisy_plane("ZFAT11 (radius 2d)", [](Mesh &m)
-                               { PMP::bilateral_normal_denoising(m, CGAL::parameters::relative_neighbor_radius(2.)); });
+  const Errors e = noisy_plane("ZFAT11 (radius 2d)", [](Mesh& m) {
+    PMP::bilateral_normal_denoising(m, CGAL::parameters::relative_neighbor_radius(2.));
+  });
   EXPECT_LT(e.after, e.before / 10.);
 }
 
 TEST(BilateralNormalDenoising, SurfaceMeshAndPolyhedronGiveTheSameResult)
 {
-  EXPECT_LE(surface_mesh_vs_polyhedron([](auto &m) { PMP::bilateral_normal_denoising(m); }), 1e-12);
+  EXPECT_LE(surface_mesh_vs_polyhedron([](auto& m) { PMP::bilateral_normal_denoising(m); }), 1e-12);
 }
 
 TEST(BilateralNormalDenoising, BadSigmaThrowsAndLeavesTheMeshUnchanged)
@@ -52,16 +53,16 @@ TEST(BilateralNormalDenoising, BadSigmaThrowsAndLeavesTheMeshUnchanged)
 
 TEST(BilateralNormalDenoising, ConstrainedVerticesDoNotMove)
 {
-  constrained_vertices_do_not_move(
-      [](Mesh &m, auto pinned)
-      { PMP::bilateral_normal_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned)); });
+  constrained_vertices_do_not_move([](Mesh& m, auto pinned) {
+    PMP::bilateral_normal_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned));
+  });
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
 TEST(BilateralNormalDenoising, ParallelEqualsSequential)
 {
-  EXPECT_EQ(parallel_vs_sequential([](Mesh &m) { PMP::bilateral_normal_denoising<CGAL::Sequential_tag>(m); },
-                                   [](Mesh &m) { PMP::bilateral_normal_denoising<CGAL::Parallel_tag>(m); }),
+  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::bilateral_normal_denoising<CGAL::Sequential_tag>(m); },
+                                   [](Mesh& m) { PMP::bilateral_normal_denoising<CGAL::Parallel_tag>(m); }),
             0.);
 }
 #endif

@@ -11,14 +11,14 @@ using namespace classic_test;
 
 TEST(FastFeaturePreservingDenoising, NoisyPlaneBecomesFlat)
 {
-  const Errors e = noisy_plane("SRML07", [](Mesh &m) { PMP::fast_feature_preserving_denoising(m); });
+  const Errors e = noisy_plane("SRML07", [](Mesh& m) { PMP::fast_feature_preserving_denoising(m); });
   EXPECT_GT(e.before, 15.);
   EXPECT_LT(e.after, e.before / 10.);
 }
 
 TEST(FastFeaturePreservingDenoising, NoiseFreeCubeKeepsItsEdges)
 {
-  const Errors e = noise_free_cube("SRML07", [](Mesh &m) { PMP::fast_feature_preserving_denoising(m); });
+  const Errors e = noise_free_cube("SRML07", [](Mesh& m) { PMP::fast_feature_preserving_denoising(m); });
   // n_i . n_j = 0 <= T across an edge: the two sides never mix
   EXPECT_LT(e.before, 1e-9);
   EXPECT_LT(e.after, 1e-9);
@@ -26,15 +26,15 @@ TEST(FastFeaturePreservingDenoising, NoiseFreeCubeKeepsItsEdges)
 
 TEST(FastFeaturePreservingDenoising, EdgeNeighborhoodAlsoSmooths)
 {
-  const Errors e =
-      noisy_plane("SRML07 (edge neighbours)", [](Mesh &m)
-                  { PMP::fast_feature_preserving_denoising(m, CGAL::parameters::use_vertex_neighborhood(false)); });
+  const Errors e = noisy_plane("SRML07 (edge neighbours)", [](Mesh& m) {
+    PMP::fast_feature_preserving_denoising(m, CGAL::parameters::use_vertex_neighborhood(false));
+  });
   EXPECT_LT(e.after, e.before / 5.);
 }
 
 TEST(FastFeaturePreservingDenoising, SurfaceMeshAndPolyhedronGiveTheSameResult)
 {
-  EXPECT_LE(surface_mesh_vs_polyhedron([](auto &m) { PMP::fast_feature_preserving_denoising(m); }), 1e-12);
+  EXPECT_LE(surface_mesh_vs_polyhedron([](auto& m) { PMP::fast_feature_preserving_denoising(m); }), 1e-12);
 }
 
 TEST(FastFeaturePreservingDenoising, BadThresholdThrowsAndLeavesTheMeshUnchanged)
@@ -53,16 +53,16 @@ TEST(FastFeaturePreservingDenoising, BadThresholdThrowsAndLeavesTheMeshUnchanged
 
 TEST(FastFeaturePreservingDenoising, ConstrainedVerticesDoNotMove)
 {
-  constrained_vertices_do_not_move(
-      [](Mesh &m, auto pinned)
-      { PMP::fast_feature_preserving_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned)); });
+  constrained_vertices_do_not_move([](Mesh& m, auto pinned) {
+    PMP::fast_feature_preserving_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned));
+  });
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
 TEST(FastFeaturePreservingDenoising, ParallelEqualsSequential)
 {
-  EXPECT_EQ(parallel_vs_sequential([](Mesh &m) { PMP::fast_feature_preserving_denoising<CGAL::Sequential_tag>(m); },
-                                   [](Mesh &m) { PMP::fast_feature_preserving_denoising<CGAL::Parallel_tag>(m); }),
+  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::fast_feature_preserving_denoising<CGAL::Sequential_tag>(m); },
+                                   [](Mesh& m) { PMP::fast_feature_preserving_denoising<CGAL::Parallel_tag>(m); }),
             0.);
 }
 #endif

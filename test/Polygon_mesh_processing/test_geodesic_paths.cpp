@@ -97,8 +97,8 @@ std::vector<std::uint32_t> faces_crossed_by_segment(const std::vector<std::array
   {
     double t0 = 0., t1 = 1.;
     const auto& t = tris[f];
-    const double orient = cross2(pts[t[1]][0] - pts[t[0]][0], pts[t[1]][1] - pts[t[0]][1],
-                                 pts[t[2]][0] - pts[t[0]][0], pts[t[2]][1] - pts[t[0]][1]);
+    const double orient = cross2(pts[t[1]][0] - pts[t[0]][0], pts[t[1]][1] - pts[t[0]][1], pts[t[2]][0] - pts[t[0]][0],
+                                 pts[t[2]][1] - pts[t[0]][1]);
     for(int k = 0; k < 3 && t0 < t1; ++k)
     {
       const auto& p = pts[t[k]];
@@ -224,10 +224,9 @@ void check_flat_paths(const Planar_grid& g, double relative_radius, std::size_t&
       const std::uint32_t j = nb.items[k];
       ASSERT_TRUE(solver.path_to(j, path)) << i << " -> " << j;
       const D::Vec3 ci = f.faces.centroids[i], cj = f.faces.centroids[j];
-      const auto expected =
-          faces_crossed_by_segment(g.pts, g.tris, {ci[0], ci[1]}, {cj[0], cj[1]});
-      ASSERT_EQ(path.faces, expected) << i << " -> " << j << ": geodesic " << to_string(path.faces)
-                                      << ", segment " << to_string(expected);
+      const auto expected = faces_crossed_by_segment(g.pts, g.tris, {ci[0], ci[1]}, {cj[0], cj[1]});
+      ASSERT_EQ(path.faces, expected) << i << " -> " << j << ": geodesic " << to_string(path.faces) << ", segment "
+                                      << to_string(expected);
       // the geodesic is the segment: its length, and its points lie on it
       const double len = D::norm(cj - ci);
       EXPECT_NEAR(path.length(), len, 1e-12 * len);

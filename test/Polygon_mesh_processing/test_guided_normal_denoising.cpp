@@ -11,16 +11,15 @@ namespace D = PMP::internal::Denoising;
 
 TEST(GuidedNormalDenoising, NoisyPlaneBecomesFlat)
 {
-  const Errors e = noisy_plane("ZDZ15", [](Mesh &m) { PMP::guided_normal_denoising(m); });
+  const Errors e = noisy_plane("ZDZ15", [](Mesh& m) { PMP::guided_normal_denoising(m); });
   EXPECT_GT(e.before, 15.);
   EXPECT_LT(e.after, e.before / 10.);
 }
 
-namespace
-{
+namespace {
 
 // true if the face's centroid is farther than `r` from every corner of [-1, 1]^3
-bool far_from_corners(const D::Vec3 &c, double r)
+bool far_from_corners(const D::Vec3& c, double r)
 {
   for(double x : {-1., 1.})
     for(double y : {-1., 1.})
@@ -30,13 +29,13 @@ bool far_from_corners(const D::Vec3 &c, double r)
   return true;
 }
 
-D::Flat_mesh flat_mesh(const Mesh &m)
+D::Flat_mesh flat_mesh(const Mesh& m)
 {
   return D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters>(m, CGAL::parameters::default_values())
       .flat(m, "test");
 }
 
-D::Face_data face_data(const Mesh &m)
+D::Face_data face_data(const Mesh& m)
 {
   const D::Flat_mesh flat = flat_mesh(m);
   D::Face_data fd;
@@ -57,7 +56,7 @@ TEST(GuidedNormalDenoising, NoiseFreeCubeKeepsItsEdges)
 {
   Mesh cube = denoising_test::cube<Mesh>(12);
   const D::Face_data before = face_data(cube);
-  const Errors e = noise_free_cube("ZDZ15", [](Mesh &m) { PMP::guided_normal_denoising(m); });
+  const Errors e = noise_free_cube("ZDZ15", [](Mesh& m) { PMP::guided_normal_denoising(m); });
   PMP::guided_normal_denoising(cube);
   const D::Face_data after = face_data(cube);
   double far_max = 0.;
@@ -105,7 +104,7 @@ TEST(GuidedNormalDenoising, GuidanceOfACubeIsTheFaceNormalAwayFromCorners)
 
 TEST(GuidedNormalDenoising, SurfaceMeshAndPolyhedronGiveTheSameResult)
 {
-  EXPECT_LE(surface_mesh_vs_polyhedron([](auto &m) { PMP::guided_normal_denoising(m); }), 1e-12);
+  EXPECT_LE(surface_mesh_vs_polyhedron([](auto& m) { PMP::guided_normal_denoising(m); }), 1e-12);
 }
 
 TEST(GuidedNormalDenoising, BadRadiusThrowsAndLeavesTheMeshUnchanged)
@@ -119,16 +118,16 @@ TEST(GuidedNormalDenoising, BadRadiusThrowsAndLeavesTheMeshUnchanged)
 
 TEST(GuidedNormalDenoising, ConstrainedVerticesDoNotMove)
 {
-  constrained_vertices_do_not_move(
-      [](Mesh &m, auto pinned)
-      { PMP::guided_normal_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned)); });
+  constrained_vertices_do_not_move([](Mesh& m, auto pinned) {
+    PMP::guided_normal_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned));
+  });
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
 TEST(GuidedNormalDenoising, ParallelEqualsSequential)
 {
-  EXPECT_EQ(parallel_vs_sequential([](Mesh &m) { PMP::guided_normal_denoising<CGAL::Sequential_tag>(m); },
-                                   [](Mesh &m) { PMP::guided_normal_denoising<CGAL::Parallel_tag>(m); }),
+  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::guided_normal_denoising<CGAL::Sequential_tag>(m); },
+                                   [](Mesh& m) { PMP::guided_normal_denoising<CGAL::Parallel_tag>(m); }),
             0.);
 }
 #endif

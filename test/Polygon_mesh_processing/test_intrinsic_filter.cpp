@@ -260,9 +260,9 @@ void reference_pass(const D::Path_forest& forest, const std::vector<D::Vec3>& n,
       const D::Vec3& nk = n[forest.face[k]];
       S[k - b] = (p < 0 ? 0. : S[p]) + std::sqrt(D::squared_norm(nk - np));
       R[k - b] = (p < 0 ? 0. : R[p]) + std::sqrt(D::squared_norm(nk - n[i]));
-      const double w = area[forest.face[k]] *
-                       std::exp(-S[k - b] * S[k - b] / (2. * kernel.sigma_spatial * kernel.sigma_spatial) -
-                                R[k - b] * R[k - b] / (2. * kernel.sigma_range * kernel.sigma_range));
+      const double w =
+          area[forest.face[k]] * std::exp(-S[k - b] * S[k - b] / (2. * kernel.sigma_spatial * kernel.sigma_spatial) -
+                                          R[k - b] * R[k - b] / (2. * kernel.sigma_range * kernel.sigma_range));
       sum = sum + w * nk;
     }
     const double len = D::norm(sum);
@@ -280,13 +280,14 @@ TEST(IntrinsicFilter, DenoiserOnTheEngineEqualsTheDirectFormula)
   const unsigned k = 5;
   // the fold safeguard is a separate layer of the vertex update: off here, as
   // in the plain eq. 10 of the reference loop
-  PMP::intrinsic_denoising(mesh, CGAL::parameters::number_of_iterations(k).prevent_folds(false).automatic_parameters(false));
+  PMP::intrinsic_denoising(mesh,
+                           CGAL::parameters::number_of_iterations(k).prevent_folds(false).automatic_parameters(false));
 
   // Algorithm 1 again with the reference pass
   const D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters> maps(reference,
                                                                             CGAL::parameters::default_values());
-  D::Intrinsic_setup s = D::make_intrinsic_setup<CGAL::Sequential_tag>(reference, CGAL::parameters::default_values(),
-                                                                       maps, "test");
+  D::Intrinsic_setup s =
+      D::make_intrinsic_setup<CGAL::Sequential_tag>(reference, CGAL::parameters::default_values(), maps, "test");
   D::Face_data fd = s.input_faces;
   std::vector<D::Vec3> filtered, c, nx;
   for(unsigned it = 0; it < k; ++it)

@@ -4,13 +4,14 @@
 
 #include "classic_test_helpers.h"
 
+#include <memory>
 #include <stdexcept>
 
 using namespace classic_test;
 
 TEST(L0Denoising, NoisyPlaneBecomesFlat)
 {
-  const Errors e = noisy_plane("HS13", [](Mesh &m) { PMP::l0_denoising(m); });
+  const Errors e = noisy_plane("HS13", [](Mesh& m) { PMP::l0_denoising(m); });
   EXPECT_GT(e.before, 15.);
   EXPECT_LT(e.after, e.before / 20.);
 }
@@ -21,11 +22,11 @@ TEST(L0Denoising, NoisyPlaneBecomesFlat)
 // factor (1.15) E_n 0.41 deg, E_v 2.2e-3; with 0.02, E_n 1.9e-7 deg.
 TEST(L0Denoising, NoiseFreeCubeKeepsItsEdges)
 {
-  const Errors e = noise_free_cube("HS13", [](Mesh &m) { PMP::l0_denoising(m); });
+  const Errors e = noise_free_cube("HS13", [](Mesh& m) { PMP::l0_denoising(m); });
   EXPECT_LT(e.before, 0.45);
   EXPECT_LT(e.after, 2.5e-3);
   const Errors small = noise_free_cube("HS13 (lambda factor 0.02)",
-                                       [](Mesh &m) { PMP::l0_denoising(m, CGAL::parameters::l0_weight(0.02)); });
+                                       [](Mesh& m) { PMP::l0_denoising(m, CGAL::parameters::l0_weight(0.02)); });
   EXPECT_LT(small.before, 1e-5);
   EXPECT_LT(small.after, 1e-7);
 }
@@ -53,7 +54,7 @@ TEST(L0Denoising, EdgeOperatorVanishesOnCoplanarTriangles)
 
 TEST(L0Denoising, SurfaceMeshAndPolyhedronGiveTheSameResult)
 {
-  EXPECT_LE(surface_mesh_vs_polyhedron([](auto &m) { PMP::l0_denoising(m); }), 1e-12);
+  EXPECT_LE(surface_mesh_vs_polyhedron([](auto& m) { PMP::l0_denoising(m); }), 1e-12);
 }
 
 TEST(L0Denoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
@@ -73,4 +74,39 @@ TEST(L0Denoising, ConstrainedVerticesDoNotMove)
 {
   constrained_vertices_do_not_move(
       [](Mesh& m, auto pinned) { PMP::l0_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned)); });
+}
+
+// A solver that counts its factorisations, and one whose factorisation fails.
+struct Counting_solver : CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType>>
+{
+  typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType>> Base;
+  std::shared_ptr<int> factorisations = std::make_shared<int>(0);
+  bool fail = false;
+  bool factor(const Matrix& A, NT& D)
+  {
+    ++*factorisations;
+    return !fail && Base::factor(A, D);
+  }
+};
+
+// The sparse_linear_solver parameter is the solver used: one factorisation
+// per value of beta (1e-3 to 1e3 by factors sqrt(2): 40), the same result as
+// the default solver, and its failure reported.
+TEST(L0Denoising, SparseLinearSolverIsTheOneUsed)
+{
+  Mesh reference = denoising_test::cube<Mesh>(6);
+  PMP::add_gaussian_noise(reference, 0.2, CGAL::parameters::random_seed(3));
+  Mesh by_default = reference, given = reference;
+  PMP::l0_denoising(by_default);
+  Counting_solver solver;
+  PMP::l0_denoising(given, CGAL::parameters::sparse_linear_solver(solver));
+  EXPECT_EQ(*solver.factorisations, 40);
+  EXPECT_EQ(max_distance(positions(by_default), positions(given)), 0.);
+
+  Counting_solver failing;
+  failing.fail = true;
+  Mesh m = reference;
+  EXPECT_THROW(PMP::l0_denoising(m, CGAL::parameters::sparse_linear_solver(failing)), std::runtime_error);
+  EXPECT_EQ(max_distance(positions(reference), positions(m)), 0.); // left unchanged
+  EXPECT_EQ(*failing.factorisations, 1);
 }

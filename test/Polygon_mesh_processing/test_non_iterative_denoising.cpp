@@ -10,7 +10,7 @@ using namespace classic_test;
 
 TEST(NonIterativeDenoising, NoisyPlaneBecomesFlat)
 {
-  const Errors e = noisy_plane("JDD03", [](Mesh &m) { PMP::non_iterative_denoising(m); });
+  const Errors e = noisy_plane("JDD03", [](Mesh& m) { PMP::non_iterative_denoising(m); });
   EXPECT_GT(e.before, 15.);
   EXPECT_LT(e.after, e.before / 4.);
 }
@@ -22,22 +22,22 @@ TEST(NonIterativeDenoising, NoisyPlaneBecomesFlat)
 // 3.0e-3; with the default sigma_g = l/2, E_n 4.12 deg, E_v 1.58e-2.
 TEST(NonIterativeDenoising, NoiseFreeCubeKeepsItsEdgesWithASmallSigmaG)
 {
-  const Errors e = noise_free_cube("JDD03 (sigma_g 0.1 l)", [](Mesh &m)
-                                   { PMP::non_iterative_denoising(m, CGAL::parameters::sigma_range(0.1)); });
+  const Errors e = noise_free_cube(
+      "JDD03 (sigma_g 0.1 l)", [](Mesh& m) { PMP::non_iterative_denoising(m, CGAL::parameters::sigma_range(0.1)); });
   EXPECT_LT(e.before, 1.05);
   EXPECT_LT(e.after, 3.2e-3);
 }
 
 TEST(NonIterativeDenoising, NoiseFreeCubeWithDefaultsMeasured)
 {
-  const Errors e = noise_free_cube("JDD03", [](Mesh &m) { PMP::non_iterative_denoising(m); });
+  const Errors e = noise_free_cube("JDD03", [](Mesh& m) { PMP::non_iterative_denoising(m); });
   EXPECT_LT(e.before, 4.5);
   EXPECT_LT(e.after, 1.7e-2);
 }
 
 TEST(NonIterativeDenoising, SurfaceMeshAndPolyhedronGiveTheSameResult)
 {
-  EXPECT_LE(surface_mesh_vs_polyhedron([](auto &m) { PMP::non_iterative_denoising(m); }), 1e-12);
+  EXPECT_LE(surface_mesh_vs_polyhedron([](auto& m) { PMP::non_iterative_denoising(m); }), 1e-12);
 }
 
 TEST(NonIterativeDenoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
@@ -53,16 +53,16 @@ TEST(NonIterativeDenoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
 
 TEST(NonIterativeDenoising, ConstrainedVerticesDoNotMove)
 {
-  constrained_vertices_do_not_move(
-      [](Mesh &m, auto pinned)
-      { PMP::non_iterative_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned)); });
+  constrained_vertices_do_not_move([](Mesh& m, auto pinned) {
+    PMP::non_iterative_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned));
+  });
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
 TEST(NonIterativeDenoising, ParallelEqualsSequential)
 {
-  EXPECT_EQ(parallel_vs_sequential([](Mesh &m) { PMP::non_iterative_denoising<CGAL::Sequential_tag>(m); },
-                                   [](Mesh &m) { PMP::non_iterative_denoising<CGAL::Parallel_tag>(m); }),
+  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::non_iterative_denoising<CGAL::Sequential_tag>(m); },
+                                   [](Mesh& m) { PMP::non_iterative_denoising<CGAL::Parallel_tag>(m); }),
             0.);
 }
 #endif

@@ -32,8 +32,8 @@ struct Flat_setup
   D::Face_data fd;
   double r = 0.;
   explicit Flat_setup(const Mesh& mesh)
-    : m(D::make_flat_mesh(mesh, get(CGAL::vertex_point, mesh), get(CGAL::vertex_index, mesh),
-                          get(CGAL::face_index, mesh), "test"))
+      : m(D::make_flat_mesh(mesh, get(CGAL::vertex_point, mesh), get(CGAL::vertex_index, mesh),
+                            get(CGAL::face_index, mesh), "test"))
   {
     D::compute_face_data<Tag>(m, m.points, fd);
     r = 4. * D::mean_adjacent_centroid_distance(m, fd);
@@ -169,14 +169,14 @@ TEST(SquarePattern, HandBuiltNeighbourhoodGivesRegionsOrderAndParents)
   // `order`. One neighbour lies inside face 0 (dropped), one above the plane
   // (its projection falls in the same region) and one in another region.
   const std::vector<D::Vec3> centroids = {
-      {0.9, 0.9, 0.},  // 1: region A, 3rd closest
-      {0.6, 0.6, 0.},  // 2: region A, closest
-      {0.2, 0.2, 0.},  // 3: inside face 0 -> dropped
-      {1.2, 1.2, 0.},  // 4: region A, 5th
+      {0.9, 0.9, 0.},     // 1: region A, 3rd closest
+      {0.6, 0.6, 0.},     // 2: region A, closest
+      {0.2, 0.2, 0.},     // 3: inside face 0 -> dropped
+      {1.2, 1.2, 0.},     // 4: region A, 5th
       {0.75, 0.75, 0.05}, // 5: region A after projection, 2nd
-      {1.05, 1.05, 0.}, // 6: region A, 4th
-      {1.4, 1.4, 0.},  // 7: region A, 6th
-      {-0.5, -0.5, 0.} // 8: beyond vertex 0 (another region)
+      {1.05, 1.05, 0.},   // 6: region A, 4th
+      {1.4, 1.4, 0.},     // 7: region A, 6th
+      {-0.5, -0.5, 0.}    // 8: beyond vertex 0 (another region)
   };
   Hand_built h(centroids);
   const D::Path_forest forest = D::square_pattern_paths(h.mesh, h.faces, h.neighbors);
@@ -339,7 +339,7 @@ TEST(SquarePattern, FandiskForestIsWellFormed)
       ASSERT_LE(D::norm(fd.centroids[forest.face[k]] - fd.centroids[i]), 4 * d * (1 + 1e-12));
     }
   }
-  // NOTES 6: well under one dropped neighbour per face; about 60 neighbours at 4d
+  // dropped neighbours (inside face i): well under one dropped neighbour per face; about 60 neighbours at 4d
   EXPECT_LT(double(dropped) / m.number_of_faces(), 1.);
   EXPECT_GT(double(total) / m.number_of_faces(), 30.);
   EXPECT_LT(double(total) / m.number_of_faces(), 120.);
@@ -433,14 +433,14 @@ TEST(FilterPass, VectorKernelEqualsGenericEngine)
 #ifdef CGAL_PMP_DENOISING_SSE2
       kernels.emplace_back("SSE2", std::vector<D::Vec3>(forest.number_of_faces()));
       D::intrinsic_filter_pass_l1_sse2<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel,
-                                                            kernels.back().second);
+                                                             kernels.back().second);
 #endif
 #ifdef CGAL_PMP_DENOISING_AVX2
       if(D::cpu_has_avx2())
       {
         kernels.emplace_back("AVX2", std::vector<D::Vec3>(forest.number_of_faces()));
         D::intrinsic_filter_pass_l1_avx2<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel,
-                                                              kernels.back().second);
+                                                               kernels.back().second);
       }
 #endif
       for(const auto& k : kernels)
@@ -491,8 +491,11 @@ TEST(FilterPass, VectorKernelEqualsGenericEngine)
 TEST(SquarePattern, ParentsFromRegionSizes)
 {
   const std::uint32_t w = D::Square_pattern_parent_table::width, t = D::Square_pattern_parent_table::size;
-  const std::vector<std::array<std::uint32_t, 6>> cases = {
-      {3, 0, 7, 1, 0, 12}, {0, 0, 0, 0, 0, 0}, {w - 1, w, w + 1, 1, 0, 2}, {t + 5, 2, 0, 0, 0, w + 3}, {0, 0, 0, 0, 0, 5}};
+  const std::vector<std::array<std::uint32_t, 6>> cases = {{3, 0, 7, 1, 0, 12},
+                                                           {0, 0, 0, 0, 0, 0},
+                                                           {w - 1, w, w + 1, 1, 0, 2},
+                                                           {t + 5, 2, 0, 0, 0, w + 3},
+                                                           {0, 0, 0, 0, 0, 5}};
   D::Path_forest forest;
   forest.offsets = {0};
   for(const auto& sizes : cases)
@@ -545,9 +548,10 @@ TEST(SquarePattern, CompactForestGivesTheSameTreesAndPasses)
   const D::Path_forest compact = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r, 0);
   // the setup's choice keeps the region sizes exactly where the AVX2 kernel
   // runs; the paths' own default stores parents below the memory threshold
-  EXPECT_EQ(D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r, D::square_pattern_compact_min_nodes_for_filter())
-                .square_regions.empty(),
-            !D::filter_pass_prefers_square_regions());
+  EXPECT_EQ(
+      D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r, D::square_pattern_compact_min_nodes_for_filter())
+          .square_regions.empty(),
+      !D::filter_pass_prefers_square_regions());
   EXPECT_TRUE(D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, r).square_regions.empty());
   ASSERT_TRUE(stored.square_regions.empty());
   ASSERT_EQ(compact.square_regions.size(), m.number_of_faces());
@@ -583,8 +587,7 @@ TEST(SquarePattern, CompactForestGivesTheSameTreesAndPasses)
     {
       passes[3].first = "AVX2";
       passes[3].second[f].resize(forest.number_of_faces());
-      D::intrinsic_filter_pass_l1_avx2<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel,
-                                                            passes[3].second[f]);
+      D::intrinsic_filter_pass_l1_avx2<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel, passes[3].second[f]);
     }
 #endif
   }

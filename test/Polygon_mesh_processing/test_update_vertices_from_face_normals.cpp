@@ -200,10 +200,9 @@ TEST(UpdateVerticesLeastSquares, StepSolvesItsNormalEquations)
   const Mesh noisy = noisy_copy(clean, 0.3);
   auto target = clean_normals(clean);
   Mesh mesh = noisy;
-  PMP::update_vertices_from_face_normals(mesh, boost::make_assoc_property_map(target),
-                                         CGAL::parameters::vertex_iterations(1)
-                                             .prevent_folds(false)
-                                             .vertex_update(PMP::Vertex_update::LEAST_SQUARES));
+  PMP::update_vertices_from_face_normals(
+      mesh, boost::make_assoc_property_map(target),
+      CGAL::parameters::vertex_iterations(1).prevent_folds(false).vertex_update(PMP::Vertex_update::LEAST_SQUARES));
   const double alpha = 0.05;
   double worst = 0., scale = 0.;
   for(auto v : vertices(mesh))
@@ -324,9 +323,8 @@ TEST(UpdateVerticesLeastSquares, ClassicNormalFiltersTakeTheSameParameter)
        [&](Mesh& m, bool global) {
          global ? PMP::bilateral_normal_denoising(m, ls) : PMP::bilateral_normal_denoising(m);
        }},
-      {"ZDZ15", [&](Mesh& m, bool global) {
-         global ? PMP::guided_normal_denoising(m, ls) : PMP::guided_normal_denoising(m);
-       }}};
+      {"ZDZ15",
+       [&](Mesh& m, bool global) { global ? PMP::guided_normal_denoising(m, ls) : PMP::guided_normal_denoising(m); }}};
   for(const auto& method : methods)
   {
     Mesh paper = noisy, global = noisy;
@@ -340,8 +338,7 @@ TEST(UpdateVerticesLeastSquares, ClassicNormalFiltersTakeTheSameParameter)
                std::isfinite(global.point(v).z());
     }
     const double e_paper = mean_angle_to(paper, target), e_global = mean_angle_to(global, target);
-    std::printf("%s: noisy %.3f, eq. 10 %.3f, least squares %.3f degrees\n", method.first, e_noisy, e_paper,
-                e_global);
+    std::printf("%s: noisy %.3f, eq. 10 %.3f, least squares %.3f degrees\n", method.first, e_noisy, e_paper, e_global);
     EXPECT_TRUE(differs) << method.first;
     EXPECT_TRUE(finite) << method.first;
     EXPECT_LT(e_global, e_noisy) << method.first;

@@ -55,13 +55,12 @@ public:
 };
 
 template <typename TriangleMesh, typename NamedParameters>
-void add_noise_along_normals(TriangleMesh& tmesh, double relative_sigma, double fraction,
-                             const NamedParameters& np, const char* fname)
+void add_noise_along_normals(TriangleMesh& tmesh, double relative_sigma, double fraction, const NamedParameters& np,
+                             const char* fname)
 {
   if(faces(tmesh).empty())
     return;
-  if(!(relative_sigma >= 0.) || !std::isfinite(relative_sigma))
-    throw std::invalid_argument(std::string(fname) + ": the noise level must be a non-negative finite number.");
+  require_non_negative(relative_sigma, fname, "the noise level");
   if(!(fraction >= 0. && fraction <= 1.))
     throw std::invalid_argument(std::string(fname) + ": the fraction of vertices must lie in [0, 1].");
   const Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
@@ -82,7 +81,6 @@ void add_noise_along_normals(TriangleMesh& tmesh, double relative_sigma, double 
   }
   maps.write_points(tmesh, m.points);
 }
-
 
 // Depth-scan noise (see add_depth_scan_noise()): each vertex moves along the
 // ray from a camera to it by the sum of
@@ -105,14 +103,12 @@ struct Depth_scan_model
 };
 
 template <typename TriangleMesh, typename NamedParameters>
-void add_depth_scan_noise_impl(TriangleMesh& tmesh, double relative_sigma, const NamedParameters& np,
-                               const char* fname)
+void add_depth_scan_noise_impl(TriangleMesh& tmesh, double relative_sigma, const NamedParameters& np, const char* fname)
 {
   using M = Depth_scan_model;
   if(faces(tmesh).empty())
     return;
-  if(!(relative_sigma >= 0.) || !std::isfinite(relative_sigma))
-    throw std::invalid_argument(std::string(fname) + ": the noise level must be a non-negative finite number.");
+  require_non_negative(relative_sigma, fname, "the noise level");
   const Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
   const std::uint64_t seed = parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u);
   Flat_mesh m = maps.flat(tmesh, fname);
@@ -183,6 +179,13 @@ void add_depth_scan_noise_impl(TriangleMesh& tmesh, double relative_sigma, const
   every platform (a Mersenne twister `std::mt19937_64` and the Box-Muller
   transform, both fully specified).
 
+  \tparam TriangleMesh a model of `VertexListGraph` and `FaceListGraph`
+  \tparam NamedParameters a sequence of named parameters
+  \param tmesh the triangle mesh to make noisy; its vertex points are overwritten
+  \param relative_sigma the standard deviation of the displacements, as a multiple of the mean edge length of
+                        `tmesh` before the noise is added
+  \param np an optional sequence of named parameters among the ones listed below
+
   \cgalNamedParamsBegin
     \cgalParamNBegin{random_seed}
       \cgalParamDescription{the seed of the random generator}
@@ -219,6 +222,14 @@ void add_gaussian_noise(TriangleMesh& tmesh, double relative_sigma,
   length. Seeded and reproducible like `add_gaussian_noise()`, with the same
   named parameters.
 
+  \tparam TriangleMesh a model of `VertexListGraph` and `FaceListGraph`
+  \tparam NamedParameters a sequence of named parameters
+  \param tmesh the triangle mesh to make noisy; its vertex points are overwritten
+  \param fraction the probability with which each vertex is chosen, in [0, 1] (1: every vertex)
+  \param relative_sigma the standard deviation of the displacement of a chosen vertex, as a multiple of the mean
+                        edge length of `tmesh` before the noise is added
+  \param np an optional sequence of named parameters among the ones of `add_gaussian_noise()`
+
   \pre as for `add_gaussian_noise()`, and `fraction` lies in [0, 1].
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
@@ -244,6 +255,14 @@ void add_impulsive_noise(TriangleMesh& tmesh, double fraction, double relative_s
   amplitude half of that standard deviation), and, on 2% of the vertices, an
   outlier term of four times that standard deviation. Seeded and reproducible
   like `add_gaussian_noise()`, with the same named parameters.
+
+  \tparam TriangleMesh a model of `VertexListGraph` and `FaceListGraph`
+  \tparam NamedParameters a sequence of named parameters
+  \param tmesh the triangle mesh to make noisy; its vertex points are overwritten
+  \param relative_sigma the standard deviation of the Gaussian term at the depth of the bounding-box centre, as a
+                        multiple of the mean edge length of `tmesh` before the noise is added; the low-frequency
+                        and outlier terms are proportional to it
+  \param np an optional sequence of named parameters among the ones of `add_gaussian_noise()`
 
   \pre as for `add_gaussian_noise()`.
 */

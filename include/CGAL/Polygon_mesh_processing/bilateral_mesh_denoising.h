@@ -13,13 +13,79 @@
 
 #include <CGAL/tags.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <vector>
 
-namespace CGAL
+namespace CGAL {
+namespace Polygon_mesh_processing {
+
+namespace internal {
+namespace Denoising {
+
+// One step of Fleishman et al.'s vertex filter: each free vertex v moves
+// along its area-weighted normal n_v by the average of the heights
+// h = n_v . (q - v) of the vertices q within 2 sigma_c (reached through
+// edges), weighted by exp(-|q - v|^2 / 2 sigma_c^2 - h^2 / 2 sigma_s^2); with
+// `adaptive`, sigma_s is the standard deviation of those heights.
+struct Vertex_bilateral_filter
 {
-namespace Polygon_mesh_processing
-{
+  double sigma_c, sigma_s;
+  bool adaptive;
+
+  // From mesh.points to `next` (one entry per vertex).
+  template <typename ConcurrencyTag>
+  void step(const Flat_mesh& mesh, const Csr& adjacency, const std::vector<char>& fixed, std::vector<Vec3>& next) const
+  {
+    const std::vector<Vec3> normals = area_weighted_vertex_normals(mesh);
+    const Csr neighbors =
+        geometric_neighborhoods<ConcurrencyTag>(mesh.points, Vertex_edge_adjacency{adjacency}, 2. * sigma_c);
+    const std::vector<Vec3>& p = mesh.points;
+    for_each_chunk<ConcurrencyTag>(p.size(), [&](std::size_t b, std::size_t e) {
+      for(std::size_t v = b; v < e; ++v)
+      {
+        next[v] = p[v];
+        const std::uint32_t kb = neighbors.begin(v), ke = neighbors.end(v);
+        if((!fixed.empty() && fixed[v]) || kb == ke || squared_norm(normals[v]) == 0.)
+          continue;
+        const double s = adaptive ? height_deviation(p, neighbors, v, normals[v]) : sigma_s;
+        double num = 0., den = 0.;
+        for(std::uint32_t k = kb; k < ke; ++k)
+        {
+          const Vec3 d = p[neighbors.items[k]] - p[v];
+          const double t2 = squared_norm(d);
+          const double h = dot(normals[v], d);
+          // with a zero sigma_s (all offsets equal) the range weight is 1
+          const double w = std::exp(-t2 / (2. * sigma_c * sigma_c) - (s > 0. ? h * h / (2. * s * s) : 0.));
+          num += w * h;
+          den += w;
+        }
+        if(den > 0.)
+          next[v] = p[v] + (num / den) * normals[v];
+      }
+    });
+  }
+
+  // The standard deviation of the heights n . (q - p_v) of v's neighbours q.
+  static double height_deviation(const std::vector<Vec3>& p, const Csr& neighbors, std::size_t v, const Vec3& n)
+  {
+    const std::uint32_t kb = neighbors.begin(v), ke = neighbors.end(v);
+    double sum = 0., sum2 = 0.;
+    for(std::uint32_t k = kb; k < ke; ++k)
+    {
+      const double h = dot(n, p[neighbors.items[k]] - p[v]);
+      sum += h;
+      sum2 += h * h;
+    }
+    const double mean = sum / double(ke - kb);
+    return std::sqrt((std::max)(0., sum2 / double(ke - kb) - mean * mean));
+  }
+};
+
+} // namespace Denoising
+} // namespace internal
 
 /*!
   \ingroup PMP_denoising_grp
@@ -43,6 +109,9 @@ namespace Polygon_mesh_processing
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
           `CGAL::Parallel_if_available_tag`; the result does not depend on it.
   \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`
+  \tparam NamedParameters a sequence of named parameters
+  \param tmesh the triangle mesh to denoise; its vertex points are overwritten with the result
+  \param np an optional sequence of named parameters among the ones listed below
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{sigma_spatial}
@@ -71,13 +140,13 @@ namespace Polygon_mesh_processing
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
-void bilateral_mesh_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::default_values())
+void bilateral_mesh_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::default_values())
 {
   namespace D = internal::Denoising;
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using parameters::is_default_parameter;
-  static const char *fname = "bilateral_mesh_denoising()";
+  static const char* fname = "bilateral_mesh_denoising()";
   if(faces(tmesh).empty())
     return;
   const double relative_sigma_c = choose_parameter(get_parameter(np, internal_np::sigma_spatial), 1.);
@@ -87,62 +156,19 @@ void bilateral_mesh_denoising(TriangleMesh &tmesh, const NamedParameters &np = p
   D::require_positive(relative_sigma_c, fname, "sigma_spatial");
   D::require_positive(relative_sigma_s, fname, "sigma_range");
 
-  const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
-  D::Flat_mesh mesh = maps.flat(tmesh, fname);
-  const std::vector<char> fixed = maps.constrained(tmesh);
-  const double l = D::mean_edge_length(mesh);
-  const double sigma_c = relative_sigma_c * l, sigma_s = relative_sigma_s * l;
-  if(!(sigma_c > 0.))
+  D::Classic_setup<TriangleMesh, NamedParameters> setup(tmesh, np, fname);
+  const double l = D::mean_edge_length(setup.mesh);
+  D::Vertex_bilateral_filter filter{relative_sigma_c * l, relative_sigma_s * l, adaptive};
+  if(!(filter.sigma_c > 0.))
     return; // every edge has length 0: nothing to filter
-  const D::Csr adjacency = D::vertex_adjacency(mesh);
-  std::vector<D::Vec3> next(mesh.number_of_vertices());
+  const D::Csr adjacency = D::vertex_adjacency(setup.mesh);
+  std::vector<D::Vec3> next(setup.mesh.number_of_vertices());
   for(unsigned int it = 0; it < iterations; ++it)
   {
-    const std::vector<D::Vec3> normals = D::area_weighted_vertex_normals(mesh);
-    const D::Csr neighbors =
-        D::geometric_neighborhoods<ConcurrencyTag>(mesh.points, D::Vertex_edge_adjacency{adjacency}, 2. * sigma_c);
-    const std::vector<D::Vec3> &p = mesh.points;
-    D::for_each_chunk<ConcurrencyTag>(
-        p.size(),
-        [&](std::size_t b, std::size_t e)
-        {
-          for(std::size_t v = b; v < e; ++v)
-          {
-            next[v] = p[v];
-            const std::uint32_t kb = neighbors.begin(v), ke = neighbors.end(v);
-            if((!fixed.empty() && fixed[v]) || kb == ke || D::squared_norm(normals[v]) == 0.)
-              continue;
-            double s = sigma_s;
-            if(adaptive)
-            {
-              double sum = 0., sum2 = 0.;
-              for(std::uint32_t k = kb; k < ke; ++k)
-              {
-                const double h = D::dot(normals[v], p[neighbors.items[k]] - p[v]);
-                sum += h;
-                sum2 += h * h;
-              }
-              const double mean = sum / double(ke - kb);
-              s = std::sqrt((std::max)(0., sum2 / double(ke - kb) - mean * mean));
-            }
-            double num = 0., den = 0.;
-            for(std::uint32_t k = kb; k < ke; ++k)
-            {
-              const D::Vec3 d = p[neighbors.items[k]] - p[v];
-              const double t2 = D::squared_norm(d);
-              const double h = D::dot(normals[v], d);
-              // with a zero sigma_s (all offsets equal) the range weight is 1
-              const double w = std::exp(-t2 / (2. * sigma_c * sigma_c) - (s > 0. ? h * h / (2. * s * s) : 0.));
-              num += w * h;
-              den += w;
-            }
-            if(den > 0.)
-              next[v] = p[v] + (num / den) * normals[v];
-          }
-        });
-    mesh.points.swap(next);
+    filter.step<ConcurrencyTag>(setup.mesh, adjacency, setup.fixed, next);
+    setup.mesh.points.swap(next);
   }
-  maps.write_points(tmesh, mesh.points);
+  setup.write_points(tmesh);
 }
 
 } // namespace Polygon_mesh_processing

@@ -15,10 +15,8 @@
 
 #include <vector>
 
-namespace CGAL
-{
-namespace Polygon_mesh_processing
-{
+namespace CGAL {
+namespace Polygon_mesh_processing {
 
 /*!
   \ingroup PMP_denoising_grp
@@ -43,11 +41,16 @@ namespace Polygon_mesh_processing
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
           `CGAL::Parallel_if_available_tag`; the result does not depend on it.
   \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`
+  \tparam NamedParameters a sequence of named parameters
+  \param tmesh the triangle mesh to denoise; its vertex points are overwritten with the result
+  \param np an optional sequence of named parameters among the ones listed below
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{sigma_spatial}
       \cgalParamDescription{\f$\sigma_s\f$, as a multiple of \f$d\f$, the mean distance between the centroids of
-  edge-adjacent faces of the input} \cgalParamType{double} \cgalParamDefault{`1` (the paper's \f$\sigma_s = d\f$)}
+                            edge-adjacent faces of the input}
+      \cgalParamType{double}
+      \cgalParamDefault{`1` (the paper's \f$\sigma_s = d\f$)}
     \cgalParamNEnd
     \cgalParamNBegin{sigma_range}
       \cgalParamDescription{\f$\sigma_r\f$, on the normal difference \f$\|n_i - n_j\|\f$}
@@ -65,17 +68,21 @@ namespace Polygon_mesh_processing
       \cgalParamDefault{`10`}
     \cgalParamNEnd
     \cgalParamNBegin{vertex_update}
-      \cgalParamDescription{`Vertex_update::PAPER` (eq. 10) or `Vertex_update::LEAST_SQUARES` (each step a global
-                            one, see `update_vertices_from_face_normals()`)}
+      \cgalParamDescription{`Vertex_update::PAPER` (eq. 10) or `Vertex_update::LEAST_SQUARES` (each step a global one,
+                            see `update_vertices_from_face_normals()`)}
       \cgalParamType{`CGAL::Polygon_mesh_processing::Vertex_update`}
       \cgalParamDefault{`Vertex_update::PAPER`}
     \cgalParamNEnd
     \cgalParamNBegin{neighbor_radius, relative_neighbor_radius}
       \cgalParamDescription{if one is given, \f$N_i\f$ is the geometric neighbourhood of that radius (absolute, or in
-  multiples of \f$d\f$) instead of the faces sharing a vertex} \cgalParamType{double} \cgalParamDefault{unused}
+                            multiples of \f$d\f$) instead of the faces sharing a vertex}
+      \cgalParamType{double}
+      \cgalParamDefault{unused}
     \cgalParamNEnd
-    \cgalParamNBegin{face_normal_map, vertex_is_constrained_map, vertex_point_map, vertex_index_map, face_index_map,
-  geom_traits} \cgalParamDescription{as for `fast_feature_preserving_denoising()`} \cgalParamNEnd \cgalNamedParamsEnd
+    \cgalParamNBegin{face_normal_map, vertex_is_constrained_map, vertex_point_map, vertex_index_map, face_index_map, geom_traits}
+      \cgalParamDescription{as for `fast_feature_preserving_denoising()`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
 
   \pre `tmesh` is a triangle mesh with finite coordinates; the sigmas and the
        radius are positive and finite. Otherwise `std::invalid_argument` is
@@ -83,43 +90,34 @@ namespace Polygon_mesh_processing
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
-void bilateral_normal_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::default_values())
+void bilateral_normal_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::default_values())
 {
   namespace D = internal::Denoising;
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using parameters::is_default_parameter;
-  static const char *fname = "bilateral_normal_denoising()";
+  static const char* fname = "bilateral_normal_denoising()";
   if(faces(tmesh).empty())
     return;
   const double relative_sigma_s = choose_parameter(get_parameter(np, internal_np::sigma_spatial), 1.);
   const double sigma_r = choose_parameter(get_parameter(np, internal_np::sigma_range), 0.35);
-  const unsigned int iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 20u);
-  const unsigned int vertex_iterations = choose_parameter(get_parameter(np, internal_np::vertex_iterations), 10u);
   D::require_positive(relative_sigma_s, fname, "sigma_spatial");
   D::require_positive(sigma_r, fname, "sigma_range");
 
-  const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
-  D::Flat_mesh mesh = maps.flat(tmesh, fname);
-  const std::vector<char> fixed = maps.constrained(tmesh);
+  D::Classic_setup<TriangleMesh, NamedParameters> setup(tmesh, np, fname);
   D::Face_data input;
-  D::compute_face_data<ConcurrencyTag>(mesh, mesh.points, input);
-  const double d = D::mean_adjacent_centroid_distance(mesh, input);
+  const double d = setup.template input_faces<ConcurrencyTag>(input);
   const bool geometric = !is_default_parameter<NamedParameters, internal_np::neighbor_radius_t>::value ||
                          !is_default_parameter<NamedParameters, internal_np::relative_neighbor_radius_t>::value;
-  const D::Csr neighbors =
-      geometric ? D::geometric_neighborhoods<ConcurrencyTag>(mesh, input.centroids, D::read_radius(np, fname, d, 1.))
-                : D::topological_face_neighbors(mesh, 1);
+  const D::Csr neighbors = geometric ? D::geometric_neighborhoods<ConcurrencyTag>(setup.mesh, input.centroids,
+                                                                                  D::read_radius(np, fname, d, 1.))
+                                     : D::topological_face_neighbors(setup.mesh, 1);
   const D::Path_forest direct = D::direct_paths(neighbors);
   const double sigma_s = relative_sigma_s * (d > 0. ? d : 1.);
-
-  auto filter = [&](const D::Face_data &fd, std::vector<D::Vec3> &out)
-  { D::bilateral_normal_pass<ConcurrencyTag>(direct, fd, fd.normals, sigma_s, sigma_r, out); };
-  const std::vector<D::Vec3> filtered =
-      D::normal_filtering_scheme<ConcurrencyTag>(
-          mesh, fixed, iterations, vertex_iterations, filter,
-          choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER));
-  D::write_normal_filtering_result(tmesh, np, maps, mesh, filtered);
+  auto filter = [&](const D::Face_data& fd, std::vector<D::Vec3>& out) {
+    D::bilateral_normal_pass<ConcurrencyTag>(direct, fd, fd.normals, sigma_s, sigma_r, out);
+  };
+  D::run_normal_filtering<ConcurrencyTag>(tmesh, np, setup, filter);
 }
 
 } // namespace Polygon_mesh_processing

@@ -29,6 +29,17 @@ namespace Polygon_mesh_processing {
   corresponding faces of `denoised` and `reference` (faces correspond by face
   index). A face of zero area counts as an angle of 0 with any normal.
 
+  \tparam TriangleMesh1 a model of `VertexListGraph` and `FaceListGraph`
+  \tparam TriangleMesh2 a model of `VertexListGraph` and `FaceListGraph`
+  \tparam NamedParameters1 a sequence of named parameters
+  \tparam NamedParameters2 a sequence of named parameters
+  \param denoised the mesh whose face normals are evaluated
+  \param reference the mesh it is compared with, for example the noise-free original; face \f$i\f$ of
+                   `reference` is compared with face \f$i\f$ of `denoised`
+  \param np1 an optional sequence of named parameters for `denoised` among the ones listed below
+  \param np2 an optional sequence of named parameters for `reference` among the ones listed below
+  \return \f$E_n\f$ in degrees
+
   \cgalNamedParamsBegin
     \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map}
       \cgalParamDescription{for `denoised` in `np1`, for `reference` in `np2`}
@@ -50,8 +61,8 @@ double face_normal_error(const TriangleMesh1& denoised, const TriangleMesh2& ref
   static const char* fname = "face_normal_error()";
   if(num_faces(denoised) != num_faces(reference))
     throw std::invalid_argument(std::string(fname) + ": the meshes have different numbers of faces (" +
-                                std::to_string(num_faces(denoised)) + " and " +
-                                std::to_string(num_faces(reference)) + ").");
+                                std::to_string(num_faces(denoised)) + " and " + std::to_string(num_faces(reference)) +
+                                ").");
   if(num_faces(denoised) == 0)
     return 0.;
   const D::Flat_mesh a = D::Mesh_maps<TriangleMesh1, NamedParameters1>(denoised, np1).flat(denoised, fname);
@@ -71,6 +82,17 @@ double face_normal_error(const TriangleMesh1& denoised, const TriangleMesh2& ref
   the faces around vertex \f$P'\f$, \f$A(M')\f$ the area of \f$M'\f$ and the
   distance to the closest point of \f$M\f$ found with an AABB tree. In the
   meshes' length unit.
+
+  \tparam TriangleMesh1 a model of `VertexListGraph` and `FaceListGraph`
+  \tparam TriangleMesh2 a model of `VertexListGraph` and `FaceListGraph`
+  \tparam NamedParameters1 a sequence of named parameters
+  \tparam NamedParameters2 a sequence of named parameters
+  \param denoised the mesh whose vertices are measured (\f$M'\f$)
+  \param reference the mesh to whose surface the distances are measured (\f$M\f$); it need not have the
+                   vertices or faces of `denoised`
+  \param np1 an optional sequence of named parameters for `denoised` among the ones listed below
+  \param np2 an optional sequence of named parameters for `reference` among the ones listed below
+  \return \f$E_v\f$ in the meshes' length unit
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map}

@@ -14,7 +14,8 @@ namespace Polygon_mesh_processing {
 /// \ingroup PMP_denoising_grp
 /// How the path from face `i` to a neighbour `j` is chosen; the sums of eq. 9
 /// run along that path.
-enum class Intrinsic_path_strategy {
+enum class Intrinsic_path_strategy
+{
   /// Section 4 of the paper: neighbours projected on the tangent plane of `i`,
   /// split into six regions by their areal coordinates, sorted by distance, and
   /// linked by the square pattern (node `k` hangs from node `(ceil(sqrt(k))-1)^2`).
@@ -38,7 +39,8 @@ enum class Intrinsic_path_strategy {
 /// Built-in signals for \f$\varphi\f$ (in \f$d^s\f$) and \f$\psi\f$ (in
 /// \f$d^r\f$) of the general intrinsic filter; a property map can be given
 /// instead.
-enum class Intrinsic_signal {
+enum class Intrinsic_signal
+{
   /// the signal being filtered
   INPUT,
   /// the position: face centroid, or vertex point
@@ -51,7 +53,8 @@ enum class Intrinsic_signal {
 
 /// \ingroup PMP_denoising_grp
 /// How the vertices follow the filtered face normals after each filter pass.
-enum class Vertex_update {
+enum class Vertex_update
+{
   /// eq. 10 of the paper: \f$v_{iter}\f$ local steps, each vertex moved along
   /// the normals of its faces toward the planes through their centroids
   PAPER,

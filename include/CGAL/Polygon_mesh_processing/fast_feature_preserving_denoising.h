@@ -12,12 +12,43 @@
 
 #include <CGAL/tags.h>
 
+#include <cstddef>
+#include <cstdint>
 #include <vector>
 
-namespace CGAL
+namespace CGAL {
+namespace Polygon_mesh_processing {
+
+namespace internal {
+namespace Denoising {
+
+// One pass of Sun et al.'s normal filter: out[i] = normalised sum over j in
+// {i} + N_i of f(n_i . n_j) n_j, with f(x) = (x - T)^2 above T and 0 below.
+// A degenerate face keeps its zero normal.
+template <typename ConcurrencyTag>
+void thresholded_normal_pass(const Csr& neighbors, const std::vector<Vec3>& n, double threshold, std::vector<Vec3>& out)
 {
-namespace Polygon_mesh_processing
-{
+  out.resize(n.size());
+  for_each_chunk<ConcurrencyTag>(n.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
+    {
+      const double self = 1. - threshold;
+      Vec3 sum = (self * self) * n[i];
+      for(std::uint32_t k = neighbors.begin(i); k < neighbors.end(i); ++k)
+      {
+        const Vec3& nj = n[neighbors.items[k]];
+        const double x = dot(n[i], nj) - threshold;
+        if(x > 0.)
+          sum = sum + (x * x) * nj;
+      }
+      const double len = norm(sum);
+      out[i] = len > 0. ? (1. / len) * sum : n[i];
+    }
+  });
+}
+
+} // namespace Denoising
+} // namespace internal
 
 /*!
   \ingroup PMP_denoising_grp
@@ -41,11 +72,17 @@ namespace Polygon_mesh_processing
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
           `CGAL::Parallel_if_available_tag`; the result does not depend on it.
   \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`
+  \tparam NamedParameters a sequence of named parameters
+  \param tmesh the triangle mesh to denoise; its vertex points are overwritten with the result
+  \param np an optional sequence of named parameters among the ones listed below
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{normal_threshold}
       \cgalParamDescription{\f$T\f$: neighbours with \f$n_i\cdot n_j \le T\f$ get no weight (larger: sharper features
-  kept, less smoothing)} \cgalParamType{double in [0, 1)} \cgalParamDefault{`0.5`} \cgalParamNEnd
+                            kept, less smoothing)}
+      \cgalParamType{double in [0, 1)}
+      \cgalParamDefault{`0.5`}
+    \cgalParamNEnd
     \cgalParamNBegin{use_vertex_neighborhood}
       \cgalParamDescription{if `true`, \f$N_i\f$ is the faces sharing a vertex with face \f$i\f$; if `false`, an edge}
       \cgalParamType{bool}
@@ -62,17 +99,21 @@ namespace Polygon_mesh_processing
       \cgalParamDefault{`10`}
     \cgalParamNEnd
     \cgalParamNBegin{vertex_update}
-      \cgalParamDescription{`Vertex_update::PAPER` (eq. 10) or `Vertex_update::LEAST_SQUARES` (each step a global
-                            one, see `update_vertices_from_face_normals()`)}
+      \cgalParamDescription{`Vertex_update::PAPER` (eq. 10) or `Vertex_update::LEAST_SQUARES` (each step a global one,
+                            see `update_vertices_from_face_normals()`)}
       \cgalParamType{`CGAL::Polygon_mesh_processing::Vertex_update`}
       \cgalParamDefault{`Vertex_update::PAPER`}
     \cgalParamNEnd
     \cgalParamNBegin{face_normal_map}
       \cgalParamDescription{if given, receives the filtered normals of the last pass}
-      \cgalParamType{a model of `WritablePropertyMap` with face descriptors as keys and `GeomTraits::Vector_3` as
-  values} \cgalParamDefault{unused} \cgalParamNEnd \cgalParamNBegin{vertex_is_constrained_map} \cgalParamDescription{a
-  property map telling which vertices never move} \cgalParamType{a model of `ReadablePropertyMap` with vertex
-  descriptors as keys and `bool` as values} \cgalParamDefault{no vertex is constrained} \cgalParamNEnd
+      \cgalParamType{a model of `WritablePropertyMap` with face descriptors as keys and `GeomTraits::Vector_3` as values}
+      \cgalParamDefault{unused}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_is_constrained_map}
+      \cgalParamDescription{a property map telling which vertices never move}
+      \cgalParamType{a model of `ReadablePropertyMap` with vertex descriptors as keys and `bool` as values}
+      \cgalParamDefault{no vertex is constrained}
+    \cgalParamNEnd
     \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map, geom_traits}
       \cgalParamDescription{as for `intrinsic_denoising()`}
     \cgalParamNEnd
@@ -83,54 +124,24 @@ namespace Polygon_mesh_processing
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
-void fast_feature_preserving_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::default_values())
+void fast_feature_preserving_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::default_values())
 {
   namespace D = internal::Denoising;
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  static const char *fname = "fast_feature_preserving_denoising()";
+  static const char* fname = "fast_feature_preserving_denoising()";
   if(faces(tmesh).empty())
     return;
   const double threshold = choose_parameter(get_parameter(np, internal_np::normal_threshold), 0.5);
   const bool vertex_ring = choose_parameter(get_parameter(np, internal_np::use_vertex_neighborhood), true);
-  const unsigned int iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 20u);
-  const unsigned int vertex_iterations = choose_parameter(get_parameter(np, internal_np::vertex_iterations), 10u);
   D::require_unit_interval(threshold, fname, "normal_threshold");
 
-  const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
-  D::Flat_mesh mesh = maps.flat(tmesh, fname);
-  const std::vector<char> fixed = maps.constrained(tmesh);
-  const D::Csr neighbors = D::topological_face_neighbors(mesh, vertex_ring ? 1 : 2);
-
-  auto filter = [&](const D::Face_data &fd, std::vector<D::Vec3> &out)
-  {
-    const std::vector<D::Vec3> &n = fd.normals;
-    out.resize(n.size());
-    D::for_each_chunk<ConcurrencyTag>(n.size(),
-                                      [&](std::size_t b, std::size_t e)
-                                      {
-                                        for(std::size_t i = b; i < e; ++i)
-                                        {
-                                          const double self = 1. - threshold;
-                                          D::Vec3 sum = (self * self) * n[i];
-                                          for(std::uint32_t k = neighbors.begin(i); k < neighbors.end(i); ++k)
-                                          {
-                                            const D::Vec3 &nj = n[neighbors.items[k]];
-                                            const double x = D::dot(n[i], nj) - threshold;
-                                            if(x > 0.)
-                                              sum = sum + (x * x) * nj;
-                                          }
-                                          const double len = D::norm(sum);
-                                          out[i] = len > 0. ? (1. / len) * sum
-                                                            : n[i]; // a degenerate face keeps its zero normal
-                                        }
-                                      });
+  D::Classic_setup<TriangleMesh, NamedParameters> setup(tmesh, np, fname);
+  const D::Csr neighbors = D::topological_face_neighbors(setup.mesh, vertex_ring ? 1 : 2);
+  auto filter = [&](const D::Face_data& fd, std::vector<D::Vec3>& out) {
+    D::thresholded_normal_pass<ConcurrencyTag>(neighbors, fd.normals, threshold, out);
   };
-  const std::vector<D::Vec3> filtered =
-      D::normal_filtering_scheme<ConcurrencyTag>(
-          mesh, fixed, iterations, vertex_iterations, filter,
-          choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER));
-  D::write_normal_filtering_result(tmesh, np, maps, mesh, filtered);
+  D::run_normal_filtering<ConcurrencyTag>(tmesh, np, setup, filter);
 }
 
 } // namespace Polygon_mesh_processing

@@ -16,14 +16,10 @@
 #include <algorithm>
 #include <vector>
 
-namespace CGAL
-{
-namespace Polygon_mesh_processing
-{
-namespace internal
-{
-namespace Denoising
-{
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Denoising {
 
 // Guidance normals of Zhang et al. 2015. The patch P_j of a face j is j and
 // the faces sharing a vertex with it (`ring`). Its consistency is
@@ -33,60 +29,55 @@ namespace Denoising
 // the normalised area-weighted mean normal of the patch of least H among the
 // patches P_j containing i (j = i or j in ring(i)).
 template <typename ConcurrencyTag>
-void guidance_normals(const Csr &ring, const Csr &edge_neighbors, const Face_data &fd, std::vector<Vec3> &guidance,
-                      std::vector<double> &consistency, std::vector<Vec3> &patch_mean)
+void guidance_normals(const Csr& ring, const Csr& edge_neighbors, const Face_data& fd, std::vector<Vec3>& guidance,
+                      std::vector<double>& consistency, std::vector<Vec3>& patch_mean)
 {
   const std::size_t nf = fd.normals.size();
-  const std::vector<Vec3> &n = fd.normals;
+  const std::vector<Vec3>& n = fd.normals;
   consistency.resize(nf);
   patch_mean.resize(nf);
   guidance.resize(nf);
   const double eps = 1e-9;
-  for_each_chunk<ConcurrencyTag>(nf,
-                                 [&](std::size_t b, std::size_t e)
-                                 {
-                                   std::vector<std::uint32_t> patch;
-                                   for(std::size_t j = b; j < e; ++j)
-                                   {
-                                     patch.assign(1, std::uint32_t(j));
-                                     patch.insert(patch.end(), ring.items.begin() + ring.begin(j),
-                                                  ring.items.begin() + ring.end(j));
-                                     double max_difference = 0., max_edge = 0., sum_edge = 0.;
-                                     Vec3 mean = {0., 0., 0.};
-                                     for(std::size_t x = 0; x < patch.size(); ++x)
-                                     {
-                                       const std::uint32_t a = patch[x];
-                                       mean = mean + fd.areas[a] * n[a];
-                                       for(std::size_t y = x + 1; y < patch.size(); ++y)
-                                         max_difference = (std::max)(max_difference, squared_norm(n[a] - n[patch[y]]));
-                                       for(std::uint32_t k = edge_neighbors.begin(a); k < edge_neighbors.end(a); ++k)
-                                       {
-                                         const std::uint32_t c = edge_neighbors.items[k];
-                                         if(c > a && std::find(patch.begin(), patch.end(), c) != patch.end())
-                                         {
-                                           const double phi = norm(n[a] - n[c]);
-                                           max_edge = (std::max)(max_edge, phi);
-                                           sum_edge += phi;
-                                         }
-                                       }
-                                     }
-                                     consistency[j] = std::sqrt(max_difference) * max_edge / (eps + sum_edge);
-                                     const double len = norm(mean);
-                                     patch_mean[j] = len > 0. ? (1. / len) * mean : n[j];
-                                   }
-                                 });
-  for_each_chunk<ConcurrencyTag>(nf,
-                                 [&](std::size_t b, std::size_t e)
-                                 {
-                                   for(std::size_t i = b; i < e; ++i)
-                                   {
-                                     std::size_t best = i;
-                                     for(std::uint32_t k = ring.begin(i); k < ring.end(i); ++k)
-                                       if(consistency[ring.items[k]] < consistency[best])
-                                         best = ring.items[k];
-                                     guidance[i] = patch_mean[best];
-                                   }
-                                 });
+  for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    std::vector<std::uint32_t> patch;
+    for(std::size_t j = b; j < e; ++j)
+    {
+      patch.assign(1, std::uint32_t(j));
+      patch.insert(patch.end(), ring.items.begin() + ring.begin(j), ring.items.begin() + ring.end(j));
+      double max_difference = 0., max_edge = 0., sum_edge = 0.;
+      Vec3 mean = {0., 0., 0.};
+      for(std::size_t x = 0; x < patch.size(); ++x)
+      {
+        const std::uint32_t a = patch[x];
+        mean = mean + fd.areas[a] * n[a];
+        for(std::size_t y = x + 1; y < patch.size(); ++y)
+          max_difference = (std::max)(max_difference, squared_norm(n[a] - n[patch[y]]));
+        for(std::uint32_t k = edge_neighbors.begin(a); k < edge_neighbors.end(a); ++k)
+        {
+          const std::uint32_t c = edge_neighbors.items[k];
+          if(c > a && std::find(patch.begin(), patch.end(), c) != patch.end())
+          {
+            const double phi = norm(n[a] - n[c]);
+            max_edge = (std::max)(max_edge, phi);
+            sum_edge += phi;
+          }
+        }
+      }
+      consistency[j] = std::sqrt(max_difference) * max_edge / (eps + sum_edge);
+      const double len = norm(mean);
+      patch_mean[j] = len > 0. ? (1. / len) * mean : n[j];
+    }
+  });
+  for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
+    {
+      std::size_t best = i;
+      for(std::uint32_t k = ring.begin(i); k < ring.end(i); ++k)
+        if(consistency[ring.items[k]] < consistency[best])
+          best = ring.items[k];
+      guidance[i] = patch_mean[best];
+    }
+  });
 }
 
 } // namespace Denoising
@@ -119,11 +110,17 @@ void guidance_normals(const Csr &ring, const Csr &edge_neighbors, const Face_dat
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
           `CGAL::Parallel_if_available_tag`; the result does not depend on it.
   \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`
+  \tparam NamedParameters a sequence of named parameters
+  \param tmesh the triangle mesh to denoise; its vertex points are overwritten with the result
+  \param np an optional sequence of named parameters among the ones listed below
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{sigma_spatial}
       \cgalParamDescription{\f$\sigma_s\f$, as a multiple of \f$d\f$, the mean distance between the centroids of
-  edge-adjacent faces of the input} \cgalParamType{double} \cgalParamDefault{`1`} \cgalParamNEnd
+                            edge-adjacent faces of the input}
+      \cgalParamType{double}
+      \cgalParamDefault{`1`}
+    \cgalParamNEnd
     \cgalParamNBegin{sigma_range}
       \cgalParamDescription{\f$\sigma_r\f$, on the guidance difference \f$\|g_i - g_j\|\f$}
       \cgalParamType{double}
@@ -131,7 +128,11 @@ void guidance_normals(const Csr &ring, const Csr &edge_neighbors, const Face_dat
     \cgalParamNEnd
     \cgalParamNBegin{relative_neighbor_radius}
       \cgalParamDescription{the radius of \f$N_i\f$ as a multiple of \f$d\f$; ignored if `neighbor_radius` gives it
-  absolutely} \cgalParamType{double} \cgalParamDefault{`2`} \cgalParamNEnd \cgalParamNBegin{number_of_iterations}
+                            absolutely}
+      \cgalParamType{double}
+      \cgalParamDefault{`2`}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_iterations}
       \cgalParamDescription{the number of normal filtering passes}
       \cgalParamType{unsigned int}
       \cgalParamDefault{`20`}
@@ -142,13 +143,15 @@ void guidance_normals(const Csr &ring, const Csr &edge_neighbors, const Face_dat
       \cgalParamDefault{`10`}
     \cgalParamNEnd
     \cgalParamNBegin{vertex_update}
-      \cgalParamDescription{`Vertex_update::PAPER` (eq. 10) or `Vertex_update::LEAST_SQUARES` (each step a global
-                            one, see `update_vertices_from_face_normals()`)}
+      \cgalParamDescription{`Vertex_update::PAPER` (eq. 10) or `Vertex_update::LEAST_SQUARES` (each step a global one,
+                            see `update_vertices_from_face_normals()`)}
       \cgalParamType{`CGAL::Polygon_mesh_processing::Vertex_update`}
       \cgalParamDefault{`Vertex_update::PAPER`}
     \cgalParamNEnd
-    \cgalParamNBegin{face_normal_map, vertex_is_constrained_map, vertex_point_map, vertex_index_map, face_index_map,
-  geom_traits} \cgalParamDescription{as for `fast_feature_preserving_denoising()`} \cgalParamNEnd \cgalNamedParamsEnd
+    \cgalParamNBegin{face_normal_map, vertex_is_constrained_map, vertex_point_map, vertex_index_map, face_index_map, geom_traits}
+      \cgalParamDescription{as for `fast_feature_preserving_denoising()`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
 
   \pre `tmesh` is a triangle mesh with finite coordinates; the sigmas and the
        radius are positive and finite. Otherwise `std::invalid_argument` is
@@ -156,46 +159,36 @@ void guidance_normals(const Csr &ring, const Csr &edge_neighbors, const Face_dat
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
-void guided_normal_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::default_values())
+void guided_normal_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::default_values())
 {
   namespace D = internal::Denoising;
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  static const char *fname = "guided_normal_denoising()";
+  static const char* fname = "guided_normal_denoising()";
   if(faces(tmesh).empty())
     return;
   const double relative_sigma_s = choose_parameter(get_parameter(np, internal_np::sigma_spatial), 1.);
   const double sigma_r = choose_parameter(get_parameter(np, internal_np::sigma_range), 0.35);
-  const unsigned int iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 20u);
-  const unsigned int vertex_iterations = choose_parameter(get_parameter(np, internal_np::vertex_iterations), 10u);
   D::require_positive(relative_sigma_s, fname, "sigma_spatial");
   D::require_positive(sigma_r, fname, "sigma_range");
 
-  const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
-  D::Flat_mesh mesh = maps.flat(tmesh, fname);
-  const std::vector<char> fixed = maps.constrained(tmesh);
+  D::Classic_setup<TriangleMesh, NamedParameters> setup(tmesh, np, fname);
   D::Face_data input;
-  D::compute_face_data<ConcurrencyTag>(mesh, mesh.points, input);
-  const double d = D::mean_adjacent_centroid_distance(mesh, input);
+  const double d = setup.template input_faces<ConcurrencyTag>(input);
   const double radius = D::read_radius(np, fname, d, 2.);
-  const D::Csr neighbors = D::geometric_neighborhoods<ConcurrencyTag>(mesh, input.centroids, radius);
+  const D::Csr neighbors = D::geometric_neighborhoods<ConcurrencyTag>(setup.mesh, input.centroids, radius);
   const D::Path_forest direct = D::direct_paths(neighbors);
-  const D::Csr ring = D::topological_face_neighbors(mesh, 1);
-  const D::Csr edge_neighbors = D::topological_face_neighbors(mesh, 2);
+  const D::Csr ring = D::topological_face_neighbors(setup.mesh, 1);
+  const D::Csr edge_neighbors = D::topological_face_neighbors(setup.mesh, 2);
   const double sigma_s = relative_sigma_s * (d > 0. ? d : 1.);
 
   std::vector<D::Vec3> guidance, patch_mean;
   std::vector<double> consistency;
-  auto filter = [&](const D::Face_data &fd, std::vector<D::Vec3> &out)
-  {
+  auto filter = [&](const D::Face_data& fd, std::vector<D::Vec3>& out) {
     D::guidance_normals<ConcurrencyTag>(ring, edge_neighbors, fd, guidance, consistency, patch_mean);
     D::bilateral_normal_pass<ConcurrencyTag>(direct, fd, guidance, sigma_s, sigma_r, out);
   };
-  const std::vector<D::Vec3> filtered =
-      D::normal_filtering_scheme<ConcurrencyTag>(
-          mesh, fixed, iterations, vertex_iterations, filter,
-          choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER));
-  D::write_normal_filtering_result(tmesh, np, maps, mesh, filtered);
+  D::run_normal_filtering<ConcurrencyTag>(tmesh, np, setup, filter);
 }
 
 } // namespace Polygon_mesh_processing

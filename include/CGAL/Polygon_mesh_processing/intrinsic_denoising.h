@@ -8,11 +8,10 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_parameters.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_denoiser.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/normal_filter_pass.h>
+#include <CGAL/Polygon_mesh_processing/intrinsic_denoising_report.h>
 
 #include <CGAL/tags.h>
 
@@ -24,196 +23,6 @@
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
-
-/// \ingroup PMP_denoising_grp
-/// Why `intrinsic_denoising()` stopped iterating.
-enum class Intrinsic_stop_reason {
-  /// it ran `maximum_iterations` iterations
-  ITERATION_LIMIT,
-  /// stopping rule: the RMS vertex displacement from the input reached the
-  /// noise level (times `Intrinsic_denoising_report::displacement_fraction`)
-  NOISE_LEVEL_REACHED,
-  /// stopping rule: the filtered normals changed by less than
-  /// `Intrinsic_denoising_report::change_tolerance` degrees on average
-  CONVERGED,
-  /// the automatic selection: the residual between the input and the result
-  /// became correlated across edges (shape, not noise, was being removed)
-  RESIDUAL_CORRELATED
-};
-
-/// \ingroup PMP_denoising_grp
-/// One candidate setting of the automatic selection of
-/// `intrinsic_denoising()`, and the evidence it was judged on.
-struct Intrinsic_candidate_report
-{
-  /// \f$\sigma_s = \sigma_r\f$ of the candidate
-  double sigma = 0.;
-  /// its radius relative to \f$d\f$
-  double relative_neighbor_radius = 0.;
-  /// the iterations it ran (it stopped at the first whose residual correlation
-  /// reached the threshold, or at the limit)
-  unsigned int iterations = 0;
-  /// whether the residual correlation stopped it (`false`: the limit)
-  bool stopped_by_correlation = false;
-  /// the RMS of the residual (input minus result) at its stop, relative to the
-  /// mean edge length
-  double residual_rms = 0.;
-  /// the residual correlation across edges at its stop
-  double residual_correlation = 0.;
-  /// the share of the interior edges of its result whose faces differ by less
-  /// than 1 degree (-1: no interior edge)
-  double flat_share = -1.;
-  /// its score: the residual correlation where its residual RMS reached the
-  /// common comparison level (the lowest wins, among the candidates whose
-  /// `flat_share` is within 0.05 of the largest if that is at least 0.3)
-  double score = 0.;
-};
-
-/// \ingroup PMP_denoising_grp
-/// What `intrinsic_denoising()` did: the parameter values it used (given or
-/// chosen automatically), the noise level, and how many iterations it ran.
-struct Intrinsic_denoising_report
-{
-  /// whether the parameters not given were derived from the mesh
-  bool automatic_parameters = false;
-  /// the noise level, as a standard deviation relative to the mean edge length:
-  /// with the automatic selection, the RMS of the kept candidate's residual
-  /// (input minus result); otherwise estimated or given (0 if neither the
-  /// automatic mode nor the stopping rule needed it)
-  double noise_level = 0.;
-  /// whether `noise_level` was estimated (`false`: given by the caller)
-  bool noise_level_estimated = false;
-  /// the mean edge length of the input mesh
-  double mean_edge_length = 0.;
-  /// \f$\sigma_s\f$ and \f$\sigma_r\f$ used
-  double sigma_spatial = 0., sigma_range = 0.;
-  /// the neighbourhood radius used, absolute and relative to \f$d\f$
-  double neighbor_radius = 0., relative_neighbor_radius = 0.;
-  /// \f$v_{iter}\f$ used
-  unsigned int vertex_iterations = 0;
-  /// the vertex update used
-  Vertex_update vertex_update = Vertex_update::PAPER;
-  /// the iteration limit, and the iterations run
-  unsigned int maximum_iterations = 0, iterations = 0;
-  /// why the iterations stopped
-  Intrinsic_stop_reason stop_reason = Intrinsic_stop_reason::ITERATION_LIMIT;
-  /// with the stopping rule or the automatic selection: the RMS vertex
-  /// displacement from the input at the end, relative to the mean edge length
-  double displacement = 0.;
-  /// with the automatic selection: the correlation across edges of the kept
-  /// candidate's residual at the vertices it did not flag as outliers (the
-  /// sparse-noise test; 0 if not measured)
-  double inlier_residual_correlation = 0.;
-  /// with the automatic selection: the number of vertices taken for sparse
-  /// (impulsive) noise, which alone were then denoised, all others staying in
-  /// place; 0 if the noise was taken for dense (every vertex denoised)
-  std::size_t outlier_vertices = 0;
-  /// the candidates of the automatic selection (empty if it did not run:
-  /// see `intrinsic_denoising()` for when it does), in the order they ran
-  std::vector<Intrinsic_candidate_report> candidates;
-  /// the index in `candidates` of the one kept
-  std::size_t chosen_candidate = 0;
-  /// the constants of the stopping rule
-  static constexpr double displacement_fraction = internal::Denoising::Automatic_rules::displacement_fraction;
-  static constexpr double change_tolerance = internal::Denoising::Automatic_rules::change_tolerance;
-};
-
-
-namespace internal {
-namespace Denoising {
-
-// The automatic selection of intrinsic_denoising() (automatic_selection.h):
-// runs the candidates of Selection_rules, sharing the paths of each radius,
-// keeps the one chosen, and describes all of them in `report`.
-template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters, typename Maps>
-Candidate_run select_automatically(const TriangleMesh& tmesh, const NamedParameters& np, const Maps& maps,
-                                   unsigned int vertex_iterations, Vertex_update vertex_update,
-                                   Intrinsic_denoising_report& report, const char* fname)
-{
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using parameters::is_default_parameter;
-  constexpr bool keep_normals = !is_default_parameter<NamedParameters, internal_np::face_normal_t>::value;
-  const auto progress = choose_parameter(get_parameter(np, internal_np::progress_callback), No_progress());
-  Automatic_selection<ConcurrencyTag> selection(
-      vertex_iterations, choose_parameter(get_parameter(np, internal_np::prevent_folds), true), keep_normals,
-      vertex_update);
-  const std::vector<char> constrained = maps.constrained(tmesh);
-  constexpr std::size_t n = Selection_rules::number_of_candidates;
-  for(std::size_t c = 0; c < n; ++c)
-  {
-    const Selection_rules::Candidate& candidate = Selection_rules::candidates[c];
-    if(c == 0 || candidate.relative_radius != Selection_rules::candidates[c - 1].relative_radius)
-    {
-      Setup_defaults defaults;
-      defaults.sigma_spatial = defaults.sigma_range = candidate.sigma;
-      defaults.relative_radius = candidate.relative_radius;
-      selection.setup_paths(make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname,
-                                                                 [&defaults](const Flat_mesh&) { return defaults; }),
-                            constrained);
-    }
-    selection.run(candidate.sigma);
-    progress(c + 1, n);
-  }
-  const std::size_t best = selection.choose();
-  std::vector<Candidate_run>& runs = selection.runs();
-  report.candidates.clear();
-  for(const Candidate_run& r : runs)
-  {
-    Intrinsic_candidate_report c;
-    c.sigma = r.sigma;
-    c.relative_neighbor_radius = r.relative_radius;
-    c.iterations = r.iterations;
-    c.stopped_by_correlation = r.stopped_by_correlation;
-    c.residual_rms = r.iterations > 0 ? r.trajectory[r.iterations - 1].rms : 0.;
-    c.residual_correlation = r.iterations > 0 ? r.trajectory[r.iterations - 1].correlation : 0.;
-    c.flat_share = r.flat_share;
-    c.score = r.score;
-    report.candidates.push_back(c);
-  }
-  report.chosen_candidate = best;
-  const Intrinsic_candidate_report& w = report.candidates[best];
-  report.mean_edge_length = selection.mean_edge_length_of_input();
-  report.noise_level = w.residual_rms;
-  report.noise_level_estimated = true;
-  report.displacement = w.residual_rms;
-  report.sigma_spatial = report.sigma_range = w.sigma;
-  report.relative_neighbor_radius = w.relative_neighbor_radius;
-  report.neighbor_radius = w.relative_neighbor_radius * selection.centroid_distance();
-  report.vertex_iterations = vertex_iterations;
-  report.vertex_update = vertex_update;
-  report.maximum_iterations = Selection_rules::max_iterations;
-  report.iterations = w.iterations;
-  report.stop_reason =
-      w.stopped_by_correlation ? Intrinsic_stop_reason::RESIDUAL_CORRELATED : Intrinsic_stop_reason::ITERATION_LIMIT;
-
-  // Sparse noise (sparse_noise.h): if the kept result's residual says that
-  // only a few vertices were noisy, those alone are denoised, from the input,
-  // with the kept kernel, radius and number of iterations.
-  if(runs[best].iterations == 0)
-    return std::move(runs[best]);
-  const Sparse_noise_test test = selection.test_sparse_noise(runs[best]);
-  report.inlier_residual_correlation = test.inlier_correlation;
-  if(!test.sparse)
-    return std::move(runs[best]);
-  const Selection_rules::Candidate& kept = Selection_rules::candidates[best];
-  if(kept.relative_radius != Selection_rules::candidates[n - 1].relative_radius)
-  {
-    Setup_defaults defaults; // the paths of the kept candidate's radius
-    defaults.sigma_spatial = defaults.sigma_range = kept.sigma;
-    defaults.relative_radius = kept.relative_radius;
-    selection.setup_paths(make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname,
-                                                               [&defaults](const Flat_mesh&) { return defaults; }),
-                          constrained);
-  }
-  Candidate_run outliers_only = selection.run_outliers_only(kept.sigma, w.iterations, test.outlier);
-  report.outlier_vertices = test.outliers;
-  report.displacement = outliers_only.trajectory.back().rms;
-  return outliers_only;
-}
-
-} // namespace Denoising
-} // namespace internal
 
 /*!
   \ingroup PMP_denoising_grp
@@ -236,8 +45,15 @@ Candidate_run select_automatically(const TriangleMesh& tmesh, const NamedParamet
   The neighbourhood and paths are rebuilt at every call; `intrinsic_denoising()`
   builds them once for all its iterations.
 
+  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+          `CGAL::Parallel_if_available_tag`; the result does not depend on it.
+  \tparam TriangleMesh a model of `FaceListGraph`
   \tparam FaceNormalMap a model of `WritablePropertyMap` with face descriptors
           as keys and `GeomTraits::Vector_3` as values
+  \tparam NamedParameters a sequence of named parameters
+  \param tmesh the triangle mesh whose face normals are filtered; it is not modified
+  \param filtered_normals the property map receiving the filtered normal of every face
+  \param np an optional sequence of named parameters among the ones listed below
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{sigma_spatial}
@@ -432,6 +248,9 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
           `CGAL::Parallel_if_available_tag`; the result does not depend on it.
   \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`
+  \tparam NamedParameters a sequence of named parameters
+  \param tmesh the triangle mesh to denoise; its vertex points are overwritten with the result
+  \param np an optional sequence of named parameters among the ones listed below
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{automatic_parameters}
@@ -526,154 +345,13 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
 Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
                                                const NamedParameters& np = parameters::default_values())
 {
-  namespace D = internal::Denoising;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using parameters::is_default_parameter;
-  static const char* fname = "intrinsic_denoising()";
-  Intrinsic_denoising_report report;
   if(faces(tmesh).empty())
-    return report;
-  const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
-  constexpr bool iterations_given = !is_default_parameter<NamedParameters, internal_np::number_of_iterations_t>::value;
-  report.automatic_parameters = choose_parameter(get_parameter(np, internal_np::automatic_parameters), true);
-  const bool stop_rule = choose_parameter(get_parameter(np, internal_np::stop_when_converged),
-                                         report.automatic_parameters && !iterations_given);
-  const double given_noise = choose_parameter(get_parameter(np, internal_np::noise_level), -1.);
-  if constexpr(!is_default_parameter<NamedParameters, internal_np::noise_level_t>::value)
-    if(!(given_noise >= 0.) || !std::isfinite(given_noise))
-      throw std::invalid_argument(std::string(fname) + ": noise_level must be finite and non-negative.");
-  const unsigned int vertex_iterations = choose_parameter(get_parameter(np, internal_np::vertex_iterations),
-                                                          D::Intrinsic_defaults::vertex_iterations);
-  const Vertex_update vertex_update =
-      choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER);
-
-  // The noise level is needed by the automatic parameters and by the stopping
-  // rule; it is estimated on the input mesh unless given.
-  D::Automatic_choice choice;
-  const bool need_noise = report.automatic_parameters || stop_rule;
-  auto choose_defaults = [&](const D::Flat_mesh& mesh) {
-    if(need_noise && given_noise < 0.)
-    {
-      // the estimate measures the mean edge length too
-      const D::Noise_estimate estimate = D::estimate_noise<ConcurrencyTag>(mesh);
-      report.mean_edge_length = estimate.mean_edge_length;
-      report.noise_level = estimate.relative_noise;
-    }
-    else
-    {
-      report.mean_edge_length = D::mean_edge_length<ConcurrencyTag>(mesh);
-      report.noise_level = need_noise ? given_noise : 0.;
-    }
-    if(need_noise)
-    {
-      report.noise_level_estimated = given_noise < 0.;
-      choice = D::automatic_choice(report.noise_level);
-    }
-    return report.automatic_parameters ? choice.kernel : D::Setup_defaults();
-  };
-  // One denoising from the input with the defaults `choose_defaults(mesh)`
-  // for the parameters not given, with the stopping rule if it is on (not
-  // tested before Automatic_rules::min_iterations unless there is no noise);
-  // the report describes it. Returns the vertices and the last filtered
-  // normals in input order.
-  struct Run
-  {
-    std::vector<D::Vec3> points, normals;
-  };
-  auto run = [&]() {
-    D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname, choose_defaults);
-    const unsigned int iterations =
-        choose_parameter(get_parameter(np, internal_np::number_of_iterations),
-                         report.automatic_parameters ? choice.max_iterations : D::Intrinsic_defaults::iterations);
-    report.sigma_spatial = s.kernel.sigma_spatial;
-    report.sigma_range = s.kernel.sigma_range;
-    report.neighbor_radius = s.radius;
-    report.relative_neighbor_radius = s.centroid_distance > 0. ? s.radius / s.centroid_distance : 0.;
-    report.vertex_iterations = vertex_iterations;
-    report.maximum_iterations = iterations;
-    report.displacement = 0.;
-    const auto progress = choose_parameter(get_parameter(np, internal_np::progress_callback), D::No_progress());
-
-    // the vertex update reads the vertices of nearby faces: number them as the
-    // (Morton-ordered) faces use them; the points go back in input order
-    if(!s.mesh.input_face.empty())
-      D::reorder_vertices_for_locality(s.mesh);
-    const std::vector<char> fixed = s.mesh.vertex_values_from_input_order(maps.constrained(tmesh));
-    D::Fold_safeguard guard;
-    guard.enabled = choose_parameter(get_parameter(np, internal_np::prevent_folds), true);
-    D::Least_squares_recovery recovery = D::make_vertex_recovery(vertex_update);
-    report.vertex_update = vertex_update;
-    const std::vector<D::Vec3> input_normals = guard.enabled ? s.input_faces.normals : std::vector<D::Vec3>();
-    guard.reference = &input_normals;
-
-    std::vector<D::Vec3>& points = s.mesh.points;
-    const std::vector<D::Vec3> input_points = stop_rule ? points : std::vector<D::Vec3>();
-    const double target_displacement = D::Automatic_rules::displacement_fraction * report.noise_level;
-    constexpr bool keep_normals = !is_default_parameter<NamedParameters, internal_np::face_normal_t>::value;
-    std::vector<D::Vec3> previous, last_filtered;
-    report.stop_reason = Intrinsic_stop_reason::ITERATION_LIMIT;
-    D::iterate_filter<ConcurrencyTag>(
-        s, s.kernel, std::move(s.input_faces), points, fixed, vertex_iterations, guard, iterations,
-        [&](unsigned int k, const std::vector<D::Vec3>& p, std::vector<D::Vec3>& filtered) {
-          report.iterations = k;
-          progress(std::size_t(k), std::size_t(iterations));
-          bool go_on = true;
-          // the stopping rule (not before min_iterations unless there is no noise)
-          if(stop_rule && k < iterations &&
-             (k >= D::Automatic_rules::min_iterations || report.noise_level < D::Automatic_rules::min_noise))
-          {
-            report.displacement = D::relative_rms_displacement(s.mesh, p, input_points, report.mean_edge_length);
-            if(report.displacement >= target_displacement)
-            {
-              report.stop_reason = Intrinsic_stop_reason::NOISE_LEVEL_REACHED;
-              go_on = false;
-            }
-            else if(!previous.empty() &&
-                    D::mean_angle_degrees(filtered, previous) < D::Automatic_rules::change_tolerance)
-            {
-              report.stop_reason = Intrinsic_stop_reason::CONVERGED;
-              go_on = false;
-            }
-          }
-          if(keep_normals && (!go_on || k == iterations))
-            last_filtered = filtered;
-          if(go_on && stop_rule)
-            previous.swap(filtered); // the next pass overwrites all of `filtered`
-          return go_on;
-        },
-        &recovery);
-    if(stop_rule)
-      report.displacement = D::relative_rms_displacement(s.mesh, points, input_points, report.mean_edge_length);
-    Run r;
-    r.points = s.mesh.vertex_values_in_input_order(points);
-    if constexpr(keep_normals)
-      r.normals = s.mesh.in_input_order(last_filtered);
-    return r;
-  };
-
-  // The automatic selection (automatic_selection.h): only when the kernel,
-  // the radius, the number of iterations and the noise level are all left
-  // to the automatic mode.
-  constexpr bool kernel_or_radius_given =
-      !is_default_parameter<NamedParameters, internal_np::sigma_spatial_t>::value ||
-      !is_default_parameter<NamedParameters, internal_np::sigma_range_t>::value ||
-      !is_default_parameter<NamedParameters, internal_np::neighbor_radius_t>::value ||
-      !is_default_parameter<NamedParameters, internal_np::relative_neighbor_radius_t>::value;
-  if(report.automatic_parameters && stop_rule && !iterations_given && !kernel_or_radius_given && given_noise < 0.)
-  {
-    const D::Candidate_run result =
-        D::select_automatically<ConcurrencyTag>(tmesh, np, maps, vertex_iterations, vertex_update, report, fname);
-    maps.write_points(tmesh, result.points);
-    if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
-      maps.write_face_vectors(tmesh, result.normals, get_parameter(np, internal_np::face_normal));
-    return report;
-  }
-  const Run result = run();
-  maps.write_points(tmesh, result.points);
-  if constexpr(!is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
-    maps.write_face_vectors(tmesh, result.normals, get_parameter(np, internal_np::face_normal));
-  return report;
+    return Intrinsic_denoising_report();
+  internal::Denoising::Intrinsic_denoiser<ConcurrencyTag, TriangleMesh, NamedParameters> denoiser(tmesh, np);
+  const internal::Denoising::Candidate_run result =
+      denoiser.uses_automatic_selection() ? denoiser.select_automatically() : denoiser.run_with_rules();
+  denoiser.write_result(tmesh, result);
+  return denoiser.report();
 }
 
 } // namespace Polygon_mesh_processing

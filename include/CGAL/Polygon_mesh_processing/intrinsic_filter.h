@@ -148,11 +148,19 @@ const Flat_signal* resolve_signal(const Param& param, Flat_signal& storage, cons
   {
     switch(param)
     {
-    case Intrinsic_signal::INPUT: return nullptr;
-    case Intrinsic_signal::POSITION: storage = flat_signal(positions); break;
-    case Intrinsic_signal::NORMAL: storage = flat_signal(normals); break;
-    case Intrinsic_signal::CONSTANT: storage = Flat_signal(); break;
-    default: throw std::invalid_argument(std::string(fname) + ": unknown signal for " + what + ".");
+    case Intrinsic_signal::INPUT:
+      return nullptr;
+    case Intrinsic_signal::POSITION:
+      storage = flat_signal(positions);
+      break;
+    case Intrinsic_signal::NORMAL:
+      storage = flat_signal(normals);
+      break;
+    case Intrinsic_signal::CONSTANT:
+      storage = Flat_signal();
+      break;
+    default:
+      throw std::invalid_argument(std::string(fname) + ": unknown signal for " + what + ".");
     }
   }
   else
@@ -242,6 +250,11 @@ void intrinsic_average_pass(const Path_forest& paths, const Intrinsic_kernel& ke
           (`Point_3`, `Vector_3`, a colour as `std::array<double, 3>`...)
   \tparam FilteredSignalMap a model of `WritablePropertyMap` with the same key
           type and a supported value type of the same dimension
+  \tparam NamedParameters a sequence of named parameters
+  \param tmesh the triangle mesh that carries the signal; it is not modified
+  \param signal the property map giving the value \f$J\f$ of every face or of every vertex
+  \param filtered the property map receiving the filtered values \f$\tilde J\f$; it may be `signal` itself
+  \param np an optional sequence of named parameters among the ones listed below
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{spatial_signal}
@@ -337,16 +350,16 @@ void intrinsic_filter(const TriangleMesh& tmesh, const SignalMap& signal, Filter
                  double unit) {
     const double radius = D::read_radius(np, fname, unit, D::Intrinsic_defaults::relative_radius);
     const D::Csr neighbors = D::geometric_neighborhoods<ConcurrencyTag>(positions, adjacency, radius);
-    const D::Path_forest paths = D::make_paths<ConcurrencyTag>(np, strategy, step_length, unit, positions, adjacency,
-                                                               neighbors, on_faces ? &m : nullptr,
-                                                               on_faces ? &fd : nullptr, fname);
+    const D::Path_forest paths =
+        D::make_paths<ConcurrencyTag>(np, strategy, step_length, unit, positions, adjacency, neighbors,
+                                      on_faces ? &m : nullptr, on_faces ? &fd : nullptr, fname);
     D::Flat_signal current = D::read_signal(keys, count, index, signal, fname, "signal"), next, phi_store, psi_store;
-    const D::Flat_signal* phi_fixed = D::resolve_signal(
-        choose_parameter(get_parameter(np, internal_np::spatial_signal), Intrinsic_signal::INPUT), phi_store, keys,
-        count, index, positions, normals, fname, "spatial signal");
-    const D::Flat_signal* psi_fixed = D::resolve_signal(
-        choose_parameter(get_parameter(np, internal_np::range_signal), Intrinsic_signal::INPUT), psi_store, keys,
-        count, index, positions, normals, fname, "range signal");
+    const D::Flat_signal* phi_fixed =
+        D::resolve_signal(choose_parameter(get_parameter(np, internal_np::spatial_signal), Intrinsic_signal::INPUT),
+                          phi_store, keys, count, index, positions, normals, fname, "spatial signal");
+    const D::Flat_signal* psi_fixed =
+        D::resolve_signal(choose_parameter(get_parameter(np, internal_np::range_signal), Intrinsic_signal::INPUT),
+                          psi_store, keys, count, index, positions, normals, fname, "range signal");
     for(unsigned int it = 0; it < iterations; ++it)
     {
       D::intrinsic_average_pass<ConcurrencyTag>(paths, kernel, phi_fixed ? *phi_fixed : current,
@@ -384,6 +397,11 @@ void intrinsic_filter(const TriangleMesh& tmesh, const SignalMap& signal, Filter
   \f$d^s = \|p - q\|\f$ and \f$d^r = \|J_p - J_q\|\f$; \f$p\f$ takes part in
   its own average, as in the classic filter. Parameters chained after these
   override them (e.g. `.neighbor_radius(2 * sigma_spatial)` for the window).
+
+  \param sigma_spatial \f$\sigma_s\f$, the width of the kernel on the distance between the positions of \f$p\f$
+                       and \f$q\f$ (face centroids or vertex points), in the mesh's length unit
+  \param sigma_range \f$\sigma_r\f$, the width of the kernel on \f$\|J_p - J_q\|\f$, in the signal's unit
+  \return the named parameters, to pass to `intrinsic_filter()` (more can be chained after them)
 */
 inline auto bilateral_filter_parameters(double sigma_spatial, double sigma_range)
 {
@@ -404,6 +422,10 @@ inline auto bilateral_filter_parameters(double sigma_spatial, double sigma_range
   squared signal changes along the shortest graph path (\f$n = 2\f$,
   \f$\varphi\f$ = the signal) and \f$d^r\f$ is constant, so only \f$d^s\f$
   decides the weights; \f$p\f$ takes part in its own average.
+
+  \param sigma_spatial \f$\sigma_s\f$, the width of the kernel on \f$d^s\f$, the square root of the sum of the
+                       squared signal changes between consecutive items of the path, in the signal's unit
+  \return the named parameters, to pass to `intrinsic_filter()` (more can be chained after them)
 */
 inline auto geodesic_filter_parameters(double sigma_spatial)
 {
@@ -422,6 +444,12 @@ inline auto geodesic_filter_parameters(double sigma_spatial)
   (Chang and Wang 2015; the paper's case 3, eq. 7): \f$n = m = 2\f$ and
   \f$\varphi = \psi\f$ = the signal along the shortest graph path;
   \f$p\f$ takes part in its own average.
+
+  \param sigma_spatial \f$\sigma_s\f$, the width of the kernel on \f$d^s\f$, the square root of the sum of the
+                       squared signal changes between consecutive items of the path, in the signal's unit
+  \param sigma_range \f$\sigma_r\f$, the width of the kernel on \f$d^r\f$, the square root of the sum over the
+                     path of the squared differences \f$\|J_x - J_p\|^2\f$, in the signal's unit
+  \return the named parameters, to pass to `intrinsic_filter()` (more can be chained after them)
 */
 inline auto propagation_filter_parameters(double sigma_spatial, double sigma_range)
 {

@@ -14,12 +14,98 @@
 #include <CGAL/tags.h>
 
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <vector>
 
-namespace CGAL
+namespace CGAL {
+namespace Polygon_mesh_processing {
+
+namespace internal {
+namespace Denoising {
+
+// Jones et al.'s filter as two named steps: mollify() smooths the vertices by
+// a spatial Gaussian of width sigma_f / 2 over the face centroids (the
+// mollified normals only serve the predictions); project() moves each free
+// vertex to the weighted mean of its projections onto the planes of the
+// faces within 2 sigma_f (their centroids, mollified normals), weighted by
+// area, a spatial Gaussian (sigma_f) and an influence Gaussian on the
+// projection distance (sigma_g). step() runs both on mesh.points.
+template <typename ConcurrencyTag>
+struct Robust_projection_filter
 {
-namespace Polygon_mesh_processing
-{
+  double sigma_f, sigma_g;
+  std::vector<Vec3> mollified, next;
+  Face_data fd, mollified_faces;
+
+  Robust_projection_filter(double sigma_f, double sigma_g, std::size_t vertices)
+      : sigma_f(sigma_f), sigma_g(sigma_g), mollified(vertices), next(vertices)
+  {
+  }
+
+  void step(Flat_mesh& mesh, const std::vector<char>& fixed)
+  {
+    compute_face_data<ConcurrencyTag>(mesh, mesh.points, fd);
+    mollify(mesh);
+    compute_face_data<ConcurrencyTag>(mesh, mollified, mollified_faces);
+    project(mesh, fixed);
+    mesh.points.swap(next);
+  }
+
+  void mollify(const Flat_mesh& mesh)
+  {
+    const std::vector<Vec3>& p = mesh.points;
+    const double sigma_m = 0.5 * sigma_f;
+    const Csr near = vertex_face_neighborhoods(mesh, p, fd.centroids, 2. * sigma_m);
+    for_each_chunk<ConcurrencyTag>(p.size(), [&](std::size_t b, std::size_t e) {
+      for(std::size_t v = b; v < e; ++v)
+      {
+        Vec3 sum = {0., 0., 0.};
+        double den = 0.;
+        for(std::uint32_t k = near.begin(v); k < near.end(v); ++k)
+        {
+          const std::uint32_t q = near.items[k];
+          const double w = fd.areas[q] * std::exp(-squared_norm(fd.centroids[q] - p[v]) / (2. * sigma_m * sigma_m));
+          sum = sum + w * fd.centroids[q];
+          den += w;
+        }
+        mollified[v] = den > 0. ? (1. / den) * sum : p[v];
+      }
+    });
+  }
+
+  void project(const Flat_mesh& mesh, const std::vector<char>& fixed)
+  {
+    const std::vector<Vec3>& p = mesh.points;
+    const std::vector<Vec3>& nq = mollified_faces.normals;
+    const Csr near = vertex_face_neighborhoods(mesh, p, fd.centroids, 2. * sigma_f);
+    for_each_chunk<ConcurrencyTag>(p.size(), [&](std::size_t b, std::size_t e) {
+      for(std::size_t v = b; v < e; ++v)
+      {
+        next[v] = p[v];
+        if(!fixed.empty() && fixed[v])
+          continue;
+        Vec3 sum = {0., 0., 0.};
+        double den = 0.;
+        for(std::uint32_t k = near.begin(v); k < near.end(v); ++k)
+        {
+          const std::uint32_t q = near.items[k];
+          const double offset = dot(fd.centroids[q] - p[v], nq[q]);
+          const Vec3 prediction = p[v] + offset * nq[q];
+          const double w = fd.areas[q] * std::exp(-squared_norm(fd.centroids[q] - p[v]) / (2. * sigma_f * sigma_f) -
+                                                  offset * offset / (2. * sigma_g * sigma_g));
+          sum = sum + w * prediction;
+          den += w;
+        }
+        if(den > 0.)
+          next[v] = (1. / den) * sum;
+      }
+    });
+  }
+};
+
+} // namespace Denoising
+} // namespace internal
 
 /*!
   \ingroup PMP_denoising_grp
@@ -45,6 +131,9 @@ namespace Polygon_mesh_processing
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
           `CGAL::Parallel_if_available_tag`; the result does not depend on it.
   \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`
+  \tparam NamedParameters a sequence of named parameters
+  \param tmesh the triangle mesh to denoise; its vertex points are overwritten with the result
+  \param np an optional sequence of named parameters among the ones listed below
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{sigma_spatial}
@@ -73,12 +162,12 @@ namespace Polygon_mesh_processing
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
-void non_iterative_denoising(TriangleMesh &tmesh, const NamedParameters &np = parameters::default_values())
+void non_iterative_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::default_values())
 {
   namespace D = internal::Denoising;
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  static const char *fname = "non_iterative_denoising()";
+  static const char* fname = "non_iterative_denoising()";
   if(faces(tmesh).empty())
     return;
   const double relative_sigma_f = choose_parameter(get_parameter(np, internal_np::sigma_spatial), 2.);
@@ -87,75 +176,15 @@ void non_iterative_denoising(TriangleMesh &tmesh, const NamedParameters &np = pa
   D::require_positive(relative_sigma_f, fname, "sigma_spatial");
   D::require_positive(relative_sigma_g, fname, "sigma_range");
 
-  const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
-  D::Flat_mesh mesh = maps.flat(tmesh, fname);
-  const std::vector<char> fixed = maps.constrained(tmesh);
-  const double l = D::mean_edge_length(mesh);
-  const double sigma_f = relative_sigma_f * l, sigma_g = relative_sigma_g * l;
-  if(!(sigma_f > 0.))
+  D::Classic_setup<TriangleMesh, NamedParameters> setup(tmesh, np, fname);
+  const double l = D::mean_edge_length(setup.mesh);
+  D::Robust_projection_filter<ConcurrencyTag> filter(relative_sigma_f * l, relative_sigma_g * l,
+                                                     setup.mesh.number_of_vertices());
+  if(!(filter.sigma_f > 0.))
     return; // every edge has length 0: nothing to filter
-  const double sigma_m = 0.5 * sigma_f;
-  const std::size_t nv = mesh.number_of_vertices();
-  std::vector<D::Vec3> mollified(nv), next(nv);
-  D::Face_data fd, mollified_faces;
   for(unsigned int it = 0; it < iterations; ++it)
-  {
-    const std::vector<D::Vec3> &p = mesh.points;
-    D::compute_face_data<ConcurrencyTag>(mesh, p, fd);
-    // mollification: vertices smoothed by the spatial Gaussian of width sigma_f / 2
-    const D::Csr near_m = D::vertex_face_neighborhoods(mesh, p, fd.centroids, 2. * sigma_m);
-    D::for_each_chunk<ConcurrencyTag>(nv,
-                                      [&](std::size_t b, std::size_t e)
-                                      {
-                                        for(std::size_t v = b; v < e; ++v)
-                                        {
-                                          D::Vec3 sum = {0., 0., 0.};
-                                          double den = 0.;
-                                          for(std::uint32_t k = near_m.begin(v); k < near_m.end(v); ++k)
-                                          {
-                                            const std::uint32_t q = near_m.items[k];
-                                            const double w =
-                                                fd.areas[q] * std::exp(-D::squared_norm(fd.centroids[q] - p[v]) /
-                                                                       (2. * sigma_m * sigma_m));
-                                            sum = sum + w * fd.centroids[q];
-                                            den += w;
-                                          }
-                                          mollified[v] = den > 0. ? (1. / den) * sum : p[v];
-                                        }
-                                      });
-    D::compute_face_data<ConcurrencyTag>(mesh, mollified, mollified_faces);
-    const std::vector<D::Vec3> &nq = mollified_faces.normals;
-
-    const D::Csr near = D::vertex_face_neighborhoods(mesh, p, fd.centroids, 2. * sigma_f);
-    D::for_each_chunk<ConcurrencyTag>(nv,
-                                      [&](std::size_t b, std::size_t e)
-                                      {
-                                        for(std::size_t v = b; v < e; ++v)
-                                        {
-                                          next[v] = p[v];
-                                          if(!fixed.empty() && fixed[v])
-                                            continue;
-                                          D::Vec3 sum = {0., 0., 0.};
-                                          double den = 0.;
-                                          for(std::uint32_t k = near.begin(v); k < near.end(v); ++k)
-                                          {
-                                            const std::uint32_t q = near.items[k];
-                                            const double offset = D::dot(fd.centroids[q] - p[v], nq[q]);
-                                            const D::Vec3 prediction = p[v] + offset * nq[q];
-                                            const double w =
-                                                fd.areas[q] * std::exp(-D::squared_norm(fd.centroids[q] - p[v]) /
-                                                                           (2. * sigma_f * sigma_f) -
-                                                                       offset * offset / (2. * sigma_g * sigma_g));
-                                            sum = sum + w * prediction;
-                                            den += w;
-                                          }
-                                          if(den > 0.)
-                                            next[v] = (1. / den) * sum;
-                                        }
-                                      });
-    mesh.points.swap(next);
-  }
-  maps.write_points(tmesh, mesh.points);
+    filter.step(setup.mesh, setup.fixed);
+  setup.write_points(tmesh);
 }
 
 } // namespace Polygon_mesh_processing

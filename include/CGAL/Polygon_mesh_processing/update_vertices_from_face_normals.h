@@ -50,6 +50,7 @@ namespace Polygon_mesh_processing {
           as keys and `GeomTraits::Vector_3` as values: the target normals. They
           are normalised before use; a zero vector leaves its face without
           influence.
+  \tparam NamedParameters a sequence of named parameters
   \param tmesh the triangle mesh to update
   \param normals the target face normals
   \param np an optional sequence of named parameters among the ones below

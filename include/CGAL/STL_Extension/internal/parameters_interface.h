@@ -12,8 +12,11 @@
 // No include guard on purpose: like the file it extends, it is included once
 // per expansion of CGAL_add_named_parameter.
 
+// CGAL's list first, then the package's: the order matters
+// clang-format off
 #include_next <CGAL/STL_Extension/internal/parameters_interface.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/parameters_list.h>
+// clang-format on
 
 #ifndef CGAL_PMP_DENOISING_NAMED_PARAMETERS_ADDED
 #define CGAL_PMP_DENOISING_NAMED_PARAMETERS_ADDED 1

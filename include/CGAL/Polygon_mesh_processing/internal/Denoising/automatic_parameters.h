@@ -87,7 +87,8 @@ inline Automatic_choice automatic_choice(double noise)
   Automatic_choice c;
   const double s = std::clamp(R::sigma_offset + R::sigma_slope * noise, R::min_sigma, R::max_sigma);
   c.kernel.sigma_spatial = c.kernel.sigma_range = s;
-  c.kernel.relative_radius = std::clamp(R::radius_offset + R::radius_slope * noise, R::min_relative_radius, R::relative_radius);
+  c.kernel.relative_radius =
+      std::clamp(R::radius_offset + R::radius_slope * noise, R::min_relative_radius, R::relative_radius);
   c.max_iterations = R::max_iterations;
   return c;
 }

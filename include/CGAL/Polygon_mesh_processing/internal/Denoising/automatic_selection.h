@@ -279,8 +279,8 @@ public:
     Candidate_run run;
     run.sigma = sigma;
     run.relative_radius = setup_.centroid_distance > 0. ? setup_.radius / setup_.centroid_distance : 0.;
-    std::vector<Vec3> points = setup_.mesh.points, normals = keep_normals_ ? setup_.input_faces.normals
-                                                                            : std::vector<Vec3>();
+    std::vector<Vec3> points = setup_.mesh.points,
+                      normals = keep_normals_ ? setup_.input_faces.normals : std::vector<Vec3>();
     run.iterations = iterate_filter<ConcurrencyTag>(
         setup_, kernel, setup_.input_faces, points, fixed, vertex_iterations_, guard_, iterations,
         [&](unsigned int, const std::vector<Vec3>&, std::vector<Vec3>& filtered) {
@@ -297,6 +297,7 @@ public:
   }
 
   std::vector<Candidate_run>& runs() { return runs_; }
+  const std::vector<Candidate_run>& runs() const { return runs_; }
   double mean_edge_length_of_input() const { return mean_edge_; }
   double centroid_distance() const { return setup_.centroid_distance; }
 

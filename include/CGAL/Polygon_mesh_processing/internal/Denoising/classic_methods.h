@@ -1,11 +1,11 @@
 // Copyright (c) 2026 The intrinsic denoising package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Parts shared by the classic denoisers of the paper's Table 1 (issue 9):
-// topological face neighbourhoods, the faces around a vertex within a radius,
-// and the loop "filter the face normals, then move the vertices (eq. 10)"
-// common to the normal-filtering methods (Sun et al. 2007, Zheng et al. 2011,
-// Zhang et al. 2015).
+// Parts shared by the classic denoisers of the paper's Table 1: the setup
+// every one starts from, topological face neighbourhoods, the faces around a
+// vertex within a radius, and the loop "filter the face normals, then move
+// the vertices (eq. 10)" common to the normal-filtering methods (Sun et al.
+// 2007, Zheng et al. 2011, Zhang et al. 2015).
 
 #ifndef CGAL_PMP_INTERNAL_DENOISING_CLASSIC_METHODS_H
 #define CGAL_PMP_INTERNAL_DENOISING_CLASSIC_METHODS_H
@@ -22,18 +22,42 @@
 #include <cstdint>
 #include <vector>
 
-namespace CGAL
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Denoising {
+
+// What every classic method starts from: the user's property maps, a flat
+// copy of the mesh (checked: triangles, index maps, finite coordinates) and
+// its constrained vertices, by vertex index. The result is written back once,
+// at the end, so an exception leaves the user's mesh unchanged.
+template <typename TriangleMesh, typename NamedParameters>
+struct Classic_setup
 {
-namespace Polygon_mesh_processing
-{
-namespace internal
-{
-namespace Denoising
-{
+  const Mesh_maps<TriangleMesh, NamedParameters> maps;
+  Flat_mesh mesh;
+  const std::vector<char> fixed;
+
+  Classic_setup(const TriangleMesh& tmesh, const NamedParameters& np, const char* fname)
+      : maps(tmesh, np), mesh(maps.flat(tmesh, fname)), fixed(maps.constrained(tmesh))
+  {
+  }
+
+  // The face data of the input and the paper's d (mean distance between the
+  // centroids of edge-adjacent faces; 0 if no two faces share an edge).
+  template <typename ConcurrencyTag>
+  double input_faces(Face_data& input) const
+  {
+    compute_face_data<ConcurrencyTag>(mesh, mesh.points, input);
+    return mean_adjacent_centroid_distance(mesh, input);
+  }
+
+  void write_points(TriangleMesh& tmesh) const { maps.write_points(tmesh, mesh.points); }
+};
 
 // The faces sharing at least `shared` vertices with each face (2: an edge, 1:
 // a vertex), face itself excluded, in increasing index order.
-inline Csr topological_face_neighbors(const Flat_mesh &m, int shared)
+inline Csr topological_face_neighbors(const Flat_mesh& m, int shared)
 {
   const std::size_t nf = m.number_of_faces();
   Csr csr;
@@ -65,8 +89,8 @@ inline Csr topological_face_neighbors(const Flat_mesh &m, int shared)
 // For each vertex v, the faces whose centroid lies within `radius` of v and
 // that are connected to v through faces of that kind (a breadth-first search
 // from v's incident faces through shared vertices).
-inline Csr vertex_face_neighborhoods(const Flat_mesh &m, const std::vector<Vec3> &points,
-                                     const std::vector<Vec3> &centroids, double radius)
+inline Csr vertex_face_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>& points,
+                                     const std::vector<Vec3>& centroids, double radius)
 {
   const std::size_t nv = m.number_of_vertices();
   const double r2 = radius * radius;
@@ -77,9 +101,8 @@ inline Csr vertex_face_neighborhoods(const Flat_mesh &m, const std::vector<Vec3>
   for(std::uint32_t v = 0; v < nv; ++v)
   {
     queue.clear();
-    const Vec3 &p = points[v];
-    auto visit = [&](std::uint32_t g)
-    {
+    const Vec3& p = points[v];
+    auto visit = [&](std::uint32_t g) {
       if(stamp[g] == v)
         return;
       stamp[g] = v;
@@ -104,8 +127,8 @@ inline Csr vertex_face_neighborhoods(const Flat_mesh &m, const std::vector<Vec3>
 // `mesh.points`; writes nothing to the user's mesh. Returns the filtered
 // normals of the last pass (empty if no pass).
 template <typename ConcurrencyTag, typename Filter>
-std::vector<Vec3> normal_filtering_scheme(Flat_mesh &mesh, const std::vector<char> &fixed, unsigned int iterations,
-                                          unsigned int vertex_iterations, Filter &filter,
+std::vector<Vec3> normal_filtering_scheme(Flat_mesh& mesh, const std::vector<char>& fixed, unsigned int iterations,
+                                          unsigned int vertex_iterations, Filter& filter,
                                           Vertex_update update = Vertex_update::PAPER)
 {
   Face_data current;
@@ -121,16 +144,25 @@ std::vector<Vec3> normal_filtering_scheme(Flat_mesh &mesh, const std::vector<cha
   return filtered;
 }
 
-// Writes the result of a normal-filtering denoiser to the user's mesh (once)
-// and, if asked for, the filtered normals of the last pass.
-template <typename TriangleMesh, typename NamedParameters, typename Maps>
-void write_normal_filtering_result(TriangleMesh &tmesh, const NamedParameters &np, const Maps &maps,
-                                   const Flat_mesh &mesh, const std::vector<Vec3> &filtered)
+// Runs a normal-filtering denoiser on `setup.mesh` with its filter
+// `filter(current_face_data, filtered_normals)` (normal_filtering_scheme()):
+// number_of_iterations, vertex_iterations and vertex_update are read from
+// `np` (defaults 20, 10 and eq. 10); then writes the points to the user's
+// mesh (once) and, if asked for, the filtered normals of the last pass.
+template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters, typename Filter>
+void run_normal_filtering(TriangleMesh& tmesh, const NamedParameters& np,
+                          Classic_setup<TriangleMesh, NamedParameters>& setup, Filter& filter)
 {
-  maps.write_points(tmesh, mesh.points);
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const std::vector<Vec3> filtered = normal_filtering_scheme<ConcurrencyTag>(
+      setup.mesh, setup.fixed, choose_parameter(get_parameter(np, internal_np::number_of_iterations), 20u),
+      choose_parameter(get_parameter(np, internal_np::vertex_iterations), 10u), filter,
+      choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER));
+  setup.write_points(tmesh);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
     if(!filtered.empty())
-      maps.write_face_vectors(tmesh, filtered, parameters::get_parameter(np, internal_np::face_normal));
+      setup.maps.write_face_vectors(tmesh, filtered, get_parameter(np, internal_np::face_normal));
 }
 
 // One pass of a (joint) bilateral normal filter, as the intrinsic filter's
@@ -142,8 +174,8 @@ void write_normal_filtering_result(TriangleMesh &tmesh, const NamedParameters &n
 // Face i takes part with weight A_i (both kernels are 1 at distance 0). A
 // face whose sum vanishes keeps its normal.
 template <typename ConcurrencyTag>
-void bilateral_normal_pass(const Path_forest &direct, const Face_data &fd, const std::vector<Vec3> &guidance,
-                           double sigma_spatial, double sigma_range, std::vector<Vec3> &out)
+void bilateral_normal_pass(const Path_forest& direct, const Face_data& fd, const std::vector<Vec3>& guidance,
+                           double sigma_spatial, double sigma_range, std::vector<Vec3>& out)
 {
   Intrinsic_kernel kernel;
   kernel.sigma_spatial = sigma_spatial;
@@ -151,13 +183,14 @@ void bilateral_normal_pass(const Path_forest &direct, const Face_data &fd, const
   kernel.spatial_exponent = kernel.range_exponent = 2.;
   kernel.include_self = true;
   out.resize(fd.normals.size());
-  const auto centroid_sq = [&fd](std::uint32_t a, std::uint32_t b)
-  { return squared_norm(fd.centroids[a] - fd.centroids[b]); };
-  const auto guidance_sq = [&guidance](std::uint32_t a, std::uint32_t b)
-  { return squared_norm(guidance[a] - guidance[b]); };
+  const auto centroid_sq = [&fd](std::uint32_t a, std::uint32_t b) {
+    return squared_norm(fd.centroids[a] - fd.centroids[b]);
+  };
+  const auto guidance_sq = [&guidance](std::uint32_t a, std::uint32_t b) {
+    return squared_norm(guidance[a] - guidance[b]);
+  };
   intrinsic_weights_pass<ConcurrencyTag>(direct, kernel, centroid_sq, guidance_sq,
-                                         [&](std::size_t i, std::uint32_t b, std::uint32_t e, const double *w)
-                                         {
+                                         [&](std::size_t i, std::uint32_t b, std::uint32_t e, const double* w) {
                                            Vec3 sum = fd.areas[i] * fd.normals[i];
                                            for(std::uint32_t k = b; k < e; ++k)
                                            {
@@ -167,14 +200,6 @@ void bilateral_normal_pass(const Path_forest &direct, const Face_data &fd, const
                                            const double len = norm(sum);
                                            out[i] = (len > 0. && std::isfinite(len)) ? (1. / len) * sum : fd.normals[i];
                                          });
-}
-
-// Throws std::invalid_argument unless x is in [0, 1) and finite (thresholds).
-inline void require_unit_interval(double x, const char *function_name, const char *what)
-{
-  if(!(x >= 0. && x < 1.))
-    throw std::invalid_argument(std::string(function_name) + ": " + what + " must be in [0, 1) (got " +
-                                std::to_string(x) + ").");
 }
 
 } // namespace Denoising

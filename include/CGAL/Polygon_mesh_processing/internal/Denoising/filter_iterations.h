@@ -12,7 +12,7 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/face_data.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/path_weights.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/normal_filter_pass.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
 
 #include <vector>

@@ -43,9 +43,12 @@ Path_forest shortest_graph_paths(const std::vector<Vec3>& positions, const Adjac
   build_lists<ConcurrencyTag, Path_node>(
       n, forest.offsets,
       [n] {
-        return Scratch{std::vector<std::uint32_t>(n, std::uint32_t(-1)), std::vector<std::uint32_t>(n, 0),
-                       std::vector<double>(n, 0.), std::vector<std::int32_t>(n, Path_forest::root),
-                       std::vector<char>(n, 0), {}};
+        return Scratch{std::vector<std::uint32_t>(n, std::uint32_t(-1)),
+                       std::vector<std::uint32_t>(n, 0),
+                       std::vector<double>(n, 0.),
+                       std::vector<std::int32_t>(n, Path_forest::root),
+                       std::vector<char>(n, 0),
+                       {}};
       },
       [&](std::size_t i, Scratch& s, std::vector<Path_node>& out) {
         const std::uint32_t mark = std::uint32_t(i);

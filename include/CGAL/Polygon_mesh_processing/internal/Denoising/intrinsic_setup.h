@@ -12,8 +12,8 @@
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/graph_paths.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/normal_filter_pass.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/path_forest.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/path_weights.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/square_pattern_paths.h>
 
 #include <stdexcept>
@@ -113,19 +113,26 @@ Path_forest make_paths(const NamedParameters& np, Intrinsic_path_strategy strate
                                 "or SHORTEST_GRAPH_PATH for vertex signals.");
   switch(strategy)
   {
-  case Intrinsic_path_strategy::DIRECT: paths = direct_paths(neighbors); break;
-  case Intrinsic_path_strategy::SHORTEST_GRAPH_PATH: paths = shortest_graph_paths<ConcurrencyTag>(positions, adjacent, neighbors); break;
-  case Intrinsic_path_strategy::SQUARE_PATTERN: paths = square_pattern_paths<ConcurrencyTag>(*faces, *fd, neighbors, square_pattern_compact_min_nodes_for_filter()); break;
+  case Intrinsic_path_strategy::DIRECT:
+    paths = direct_paths(neighbors);
+    break;
+  case Intrinsic_path_strategy::SHORTEST_GRAPH_PATH:
+    paths = shortest_graph_paths<ConcurrencyTag>(positions, adjacent, neighbors);
+    break;
+  case Intrinsic_path_strategy::SQUARE_PATTERN:
+    paths = square_pattern_paths<ConcurrencyTag>(*faces, *fd, neighbors, square_pattern_compact_min_nodes_for_filter());
+    break;
   case Intrinsic_path_strategy::GEODESIC:
   {
     Geodesic_path_options go;
-    go.patch_rings = parameters::choose_parameter(parameters::get_parameter(np, internal_np::geodesic_patch_rings),
-                                                  go.patch_rings);
+    go.patch_rings =
+        parameters::choose_parameter(parameters::get_parameter(np, internal_np::geodesic_patch_rings), go.patch_rings);
     go.step_length = use_step_length;
     go.length_unit = unit > 0. ? unit : 1.;
     return geodesic_paths<ConcurrencyTag>(*faces, *fd, neighbors, go); // with its own step lengths
   }
-  default: throw std::invalid_argument(std::string(fname) + ": unknown path strategy.");
+  default:
+    throw std::invalid_argument(std::string(fname) + ": unknown path strategy.");
   }
   if(use_step_length)
     set_step_lengths(paths, positions, unit > 0. ? unit : 1.);
@@ -180,7 +187,7 @@ Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParam
   s.radius = read_radius(np, fname, d, defaults.relative_radius);
   if(strategy == Intrinsic_path_strategy::SQUARE_PATTERN || strategy == Intrinsic_path_strategy::DIRECT)
     reorder_faces_for_locality<ConcurrencyTag>(s.mesh, s.input_faces); // same paths; results in s.mesh.input_face order
-  if(strategy == Intrinsic_path_strategy::SQUARE_PATTERN) // each neighbourhood searched and used at once
+  if(strategy == Intrinsic_path_strategy::SQUARE_PATTERN)              // each neighbourhood searched and used at once
   {
     s.paths = square_pattern_paths_within<ConcurrencyTag>(s.mesh, s.input_faces, s.radius,
                                                           square_pattern_compact_min_nodes_for_filter());

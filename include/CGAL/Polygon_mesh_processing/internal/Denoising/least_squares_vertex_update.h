@@ -75,12 +75,8 @@ inline Sym3 inverse(const Sym3& s)
   if(!(std::abs(det) > 0.) || !std::isfinite(det))
     return {0., 0., 0., 0., 0., 0.};
   const double k = 1. / det;
-  return {k * c00,
-          k * (s[0] * s[2] - s[4] * s[4]),
-          k * (s[0] * s[1] - s[3] * s[3]),
-          k * c01,
-          k * c02,
-          k * (s[3] * s[4] - s[0] * s[5])};
+  return {k * c00, k * (s[0] * s[2] - s[4] * s[4]), k * (s[0] * s[1] - s[3] * s[3]), k * c01,
+          k * c02, k * (s[3] * s[4] - s[0] * s[5])};
 }
 
 // sum_v dot(a_v, b_v) added in blocks of fixed size, then in block order: the

@@ -9,6 +9,7 @@
 #define CGAL_PMP_INTERNAL_DENOISING_MESH_ACCESS_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/face_data.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/input_checks.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/named_parameters.h>
 
 #include <CGAL/property_map.h>
@@ -43,14 +44,14 @@ struct Mesh_maps
   Vertex_constrained_map vcm;
 
   Mesh_maps(const TriangleMesh& tmesh, const NamedParameters& np)
-    : gt(parameters::choose_parameter<Geom_traits>(parameters::get_parameter(np, internal_np::geom_traits)))
-    , vpm(parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
-                                       get_property_map(CGAL::vertex_point, const_cast<TriangleMesh&>(tmesh))))
-    , vim(CGAL::get_initialized_vertex_index_map(tmesh, np))
-    , fim(CGAL::get_initialized_face_index_map(tmesh, np))
-    , vcm(parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_is_constrained),
-                                       Static_boolean_property_map<vertex_descriptor, false>()))
-  {}
+      : gt(parameters::choose_parameter<Geom_traits>(parameters::get_parameter(np, internal_np::geom_traits))),
+        vpm(parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
+                                         get_property_map(CGAL::vertex_point, const_cast<TriangleMesh&>(tmesh)))),
+        vim(CGAL::get_initialized_vertex_index_map(tmesh, np)), fim(CGAL::get_initialized_face_index_map(tmesh, np)),
+        vcm(parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_is_constrained),
+                                         Static_boolean_property_map<vertex_descriptor, false>()))
+  {
+  }
 
   Flat_mesh flat(const TriangleMesh& tmesh, const char* function_name) const
   {
@@ -89,14 +90,6 @@ struct Mesh_maps
     }
   }
 };
-
-// Throws std::invalid_argument unless x is positive and finite.
-inline void require_positive(double x, const char* function_name, const char* what)
-{
-  if(!(x > 0.) || !std::isfinite(x))
-    throw std::invalid_argument(std::string(function_name) + ": " + what + " must be a positive finite number (got " +
-                                std::to_string(x) + ").");
-}
 
 // The neighbourhood radius: neighbor_radius if given, else
 // relative_neighbor_radius (default `default_relative`) times `unit` (the

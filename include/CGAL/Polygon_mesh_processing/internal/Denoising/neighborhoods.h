@@ -129,8 +129,8 @@ struct Face_fan_search
   std::size_t count = 0;            // queue[0 .. count): {i, neighbours}
 
   explicit Face_fan_search(const Flat_mesh& m)
-    : face_stamp(m.number_of_faces(), std::uint32_t(-1)), vertex_stamp(m.number_of_vertices(), std::uint32_t(-1)),
-      queue(m.number_of_faces() + 1)
+      : face_stamp(m.number_of_faces(), std::uint32_t(-1)), vertex_stamp(m.number_of_vertices(), std::uint32_t(-1)),
+        queue(m.number_of_faces() + 1)
   {
   }
 

@@ -131,8 +131,8 @@ Noise_estimate estimate_noise(const Flat_mesh& m, double quantile = Noise_quanti
   Noise_estimate est;
   est.mean_edge_length = mean_edge_length<ConcurrencyTag>(m);
   const Csr adjacency = vertex_adjacency(m);
-  est.residuals = local_fit_residuals<ConcurrencyTag>(m, adjacency, area_weighted_vertex_normals(m),
-                                                      est.mean_edge_length);
+  est.residuals =
+      local_fit_residuals<ConcurrencyTag>(m, adjacency, area_weighted_vertex_normals(m), est.mean_edge_length);
   std::vector<double> valid;
   valid.reserve(est.residuals.size());
   for(double r : est.residuals)

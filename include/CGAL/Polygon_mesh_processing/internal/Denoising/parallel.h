@@ -11,6 +11,7 @@
 #include <CGAL/tags.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -76,12 +77,15 @@ inline void release_free_memory()
 // n + 1; std::length_error if the lists total 2^32 entries or more).
 // `make_scratch()` makes the scratch state of one chunk (allocated
 // once per chunk); `fill(i, scratch, out)` appends item i's records to `out`.
+// A chunk holds at least `min_chunk_size` items and at least n / 64 (so
+// there are at most about 64 chunks): few chunks by default, since a chunk's
+// scratch may be as large as the mesh; a slow fill with a small scratch takes
+// a small minimum, which balances the threads' loads better.
 template <typename ConcurrencyTag, typename Record, typename MakeScratch, typename Fill, typename Append>
-void build_lists(std::size_t n, std::vector<std::uint32_t>& offsets, const MakeScratch& make_scratch,
-                 const Fill& fill, const Append& append)
+void build_lists(std::size_t n, std::vector<std::uint32_t>& offsets, const MakeScratch& make_scratch, const Fill& fill,
+                 const Append& append, std::size_t min_chunk_size = 2048)
 {
-  // few chunks: a chunk's scratch may be as large as the mesh
-  const std::size_t chunk_size = (std::max)(std::size_t(2048), n / 64 + 1);
+  const std::size_t chunk_size = (std::max)((std::max)(min_chunk_size, std::size_t(1)), n / 64 + 1);
   const std::size_t nchunks = (n + chunk_size - 1) / chunk_size;
   const std::size_t sample = 64; // items whose records size the rest of their chunk
   std::vector<std::vector<Record>> chunks(nchunks);
@@ -131,6 +135,50 @@ void build_lists(std::size_t n, std::vector<std::uint32_t>& offsets, std::vector
                                           records.reserve(offsets.back()); // exact: the counts are known by now
                                         records.insert(records.end(), chunk.begin(), chunk.end());
                                       });
+}
+
+// The mean of the values that terms(f, add) gives for every face f (one
+// call add(x) per value), added in the order of the faces and of the calls,
+// as one sequential loop would. With Parallel_tag the values are computed in
+// parallel (at most 3 per face kept) and only added in order, so the result
+// is bitwise the same; a face with more than 3 values (a non-manifold edge)
+// makes the whole computation sequential. Returns 0 if there is no value.
+template <typename ConcurrencyTag, typename Terms>
+double mean_of_face_terms(std::size_t n, const Terms& terms)
+{
+  double sum = 0.;
+  std::size_t count = 0;
+  const auto add = [&sum, &count](double x) {
+    sum += x;
+    ++count;
+  };
+  bool in_order = !std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value || n < 4096;
+  if(!in_order)
+  {
+    std::vector<std::array<double, 3>> values(n);
+    std::vector<unsigned char> counts(n);
+    for_each_chunk<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
+      for(std::size_t f = b; f < e; ++f)
+      {
+        unsigned int c = 0;
+        terms(f, [&](double x) {
+          if(c < 3)
+            values[f][c] = x;
+          ++c;
+        });
+        counts[f] = static_cast<unsigned char>((std::min)(c, 4u));
+      }
+    });
+    in_order = std::find(counts.begin(), counts.end(), static_cast<unsigned char>(4)) != counts.end();
+    if(!in_order)
+      for(std::size_t f = 0; f < n; ++f)
+        for(unsigned int c = 0; c < counts[f]; ++c)
+          add(values[f][c]);
+  }
+  if(in_order)
+    for(std::size_t f = 0; f < n; ++f)
+      terms(f, add);
+  return count == 0 ? 0. : sum / double(count);
 }
 
 } // namespace Denoising

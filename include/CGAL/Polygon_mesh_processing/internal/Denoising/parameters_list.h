@@ -7,6 +7,9 @@
 // vertex_is_constrained_map, random_seed, geom_traits, vertex_point_map,
 // vertex_index_map, face_index_map).
 
+// one macro call per line, without semicolons
+// clang-format off
+
 // sigma_s and sigma_r of the kernels g(d^s; sigma_s) g(d^r; sigma_r), eq. 8
 CGAL_add_named_parameter(sigma_spatial_t, sigma_spatial, sigma_spatial)
 CGAL_add_named_parameter(sigma_range_t, sigma_range, sigma_range)
@@ -36,7 +39,7 @@ CGAL_add_named_parameter(geodesic_patch_rings_t, geodesic_patch_rings, geodesic_
 CGAL_add_named_parameter(prevent_folds_t, prevent_folds, prevent_folds)
 // how the vertices follow the filtered normals (Vertex_update)
 CGAL_add_named_parameter(vertex_update_t, vertex_update, vertex_update)
-// classic methods (issue 9)
+// classic methods
 // T of Sun et al. 2007: faces whose normals make n_i . n_j <= T get no weight
 CGAL_add_named_parameter(normal_threshold_t, normal_threshold, normal_threshold)
 // normal filtering over the faces sharing a vertex (true) or an edge (false) with face i
@@ -45,7 +48,7 @@ CGAL_add_named_parameter(use_vertex_neighborhood_t, use_vertex_neighborhood, use
 CGAL_add_named_parameter(l0_weight_t, l0_weight, l0_weight)
 // He and Schaefer 2013: initial alpha = regularization_weight * (mean dihedral angle)
 CGAL_add_named_parameter(regularization_weight_t, regularization_weight, regularization_weight)
-// automatic mode of intrinsic_denoising() (issue 7)
+// automatic mode of intrinsic_denoising()
 // whether the parameters not given are derived from the mesh (default true)
 CGAL_add_named_parameter(automatic_parameters_t, automatic_parameters, automatic_parameters)
 // the noise level in units of the mean edge length, instead of its estimate
@@ -55,3 +58,4 @@ CGAL_add_named_parameter(noise_level_t, noise_level, noise_level)
 CGAL_add_named_parameter(stop_when_converged_t, stop_when_converged, stop_when_converged)
 // a callable (iterations done, maximum iterations) called after each iteration
 CGAL_add_named_parameter(progress_callback_t, progress_callback, progress_callback)
+

@@ -85,10 +85,10 @@ struct Path_forest
   static constexpr std::int32_t root = -1;
   std::vector<std::uint32_t> offsets;
   std::vector<std::uint32_t> face;
-  std::vector<std::int32_t> parent; // local to the face's node range; empty with square_regions
+  std::vector<std::int32_t> parent;                         // local to the face's node range; empty with square_regions
   std::vector<std::array<std::uint32_t, 6>> square_regions; // by face, instead of `parent`
-  std::vector<char> weighted;       // empty: every node is weighted
-  std::vector<double> step;         // empty: every step length is 1
+  std::vector<char> weighted;                               // empty: every node is weighted
+  std::vector<double> step;                                 // empty: every step length is 1
 
   // The local parents of item i's nodes (node offsets[i] + k hangs from node
   // offsets[i] + parents(i)[k], or from item i if that is `root`): the

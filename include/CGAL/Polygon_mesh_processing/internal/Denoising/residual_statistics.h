@@ -38,36 +38,54 @@ struct Residual_statistics
   double correlation = 0.;
 };
 
-// `adjacency` is vertex_adjacency(m). Sequential: one pass over the edges, in
-// a fixed order, so the result does not depend on the thread count.
-inline Residual_statistics residual_statistics(const Csr& adjacency, const std::vector<Vec3>& points,
-                                               const std::vector<Vec3>& input, double unit)
+// The correlation of the residual input - points across the edges whose two
+// ends `keep` (a predicate on vertex indices): the sum over those edges
+// (u, v) of r_u . r_v over the sum of (|r_u|^2 + |r_v|^2) / 2; 0 if there is
+// no such edge. `adjacency` is vertex_adjacency(m). Sequential, one pass over
+// the edges in a fixed order.
+template <typename Keep>
+double residual_edge_correlation(const Csr& adjacency, const std::vector<Vec3>& points, const std::vector<Vec3>& input,
+                                 const Keep& keep)
 {
-  Residual_statistics s;
-  double cross = 0., energy = 0., squares = 0.;
-  std::size_t count = 0;
+  double cross = 0., energy = 0.;
   const std::size_t nv = adjacency.size();
   for(std::size_t v = 0; v < nv; ++v)
   {
-    if(adjacency.begin(v) == adjacency.end(v))
+    if(adjacency.begin(v) == adjacency.end(v) || !keep(v))
       continue;
     const Vec3 rv = input[v] - points[v];
     const double rv2 = squared_norm(rv);
-    squares += rv2;
-    ++count;
     for(std::uint32_t k = adjacency.begin(v); k < adjacency.end(v); ++k)
     {
       const std::uint32_t u = adjacency.items[k];
-      if(u <= v)
+      if(u <= v || !keep(u))
         continue;
       const Vec3 ru = input[u] - points[u];
       cross += dot(rv, ru);
       energy += 0.5 * (rv2 + squared_norm(ru));
     }
   }
+  return energy > 0. ? cross / energy : 0.;
+}
+
+// `adjacency` is vertex_adjacency(m). Sequential: passes over the vertices
+// and edges in a fixed order, so the result does not depend on the thread
+// count.
+inline Residual_statistics residual_statistics(const Csr& adjacency, const std::vector<Vec3>& points,
+                                               const std::vector<Vec3>& input, double unit)
+{
+  Residual_statistics s;
+  double squares = 0.;
+  std::size_t count = 0;
+  for(std::size_t v = 0; v < adjacency.size(); ++v)
+    if(adjacency.begin(v) != adjacency.end(v))
+    {
+      squares += squared_norm(input[v] - points[v]);
+      ++count;
+    }
   if(count > 0 && unit > 0.)
     s.rms = std::sqrt(squares / double(count)) / unit;
-  s.correlation = energy > 0. ? cross / energy : 0.;
+  s.correlation = residual_edge_correlation(adjacency, points, input, [](std::size_t) { return true; });
   return s;
 }
 

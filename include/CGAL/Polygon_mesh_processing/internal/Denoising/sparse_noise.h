@@ -23,6 +23,7 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/face_data.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/residual_statistics.h>
 
 #include <algorithm>
 #include <cmath>
@@ -72,22 +73,14 @@ inline Sparse_noise_test sparse_noise_test(const Flat_mesh& m, const Csr& adjace
   const std::size_t nv = m.number_of_vertices();
   Sparse_noise_test t;
   t.outlier.assign(nv, 0);
-  // area-weighted vertex normals of the result
-  std::vector<Vec3> normals(nv, Vec3{0., 0., 0.});
-  for(const auto& tri : m.triangles)
-  {
-    const Vec3 c = cross(result[tri[1]] - result[tri[0]], result[tri[2]] - result[tri[0]]);
-    for(std::uint32_t v : tri)
-      normals[v] = normals[v] + c;
-  }
+  const std::vector<Vec3> normals = area_weighted_vertex_normals(m, result);
   std::vector<double> along(nv, 0.), magnitudes;
   std::vector<char> tested(nv, 0);
   for(std::size_t v = 0; v < nv; ++v)
   {
     if(fixed[v] || adjacency.begin(v) == adjacency.end(v))
       continue;
-    const double len = norm(normals[v]);
-    along[v] = len > 0. ? dot(input[v] - result[v], normals[v]) / len : 0.;
+    along[v] = dot(input[v] - result[v], normals[v]);
     tested[v] = 1;
     magnitudes.push_back(std::abs(along[v]));
   }
@@ -105,23 +98,8 @@ inline Sparse_noise_test sparse_noise_test(const Flat_mesh& m, const Csr& adjace
       t.outlier[v] = 1;
       ++t.outliers;
     }
-  double cross_sum = 0., energy = 0.;
-  for(std::size_t v = 0; v < nv; ++v)
-  {
-    if(!tested[v] || t.outlier[v])
-      continue;
-    const Vec3 rv = input[v] - result[v];
-    for(std::uint32_t k = adjacency.begin(v); k < adjacency.end(v); ++k)
-    {
-      const std::uint32_t u = adjacency.items[k];
-      if(u <= v || !tested[u] || t.outlier[u])
-        continue;
-      const Vec3 ru = input[u] - result[u];
-      cross_sum += dot(rv, ru);
-      energy += 0.5 * (squared_norm(rv) + squared_norm(ru));
-    }
-  }
-  t.inlier_correlation = energy > 0. ? cross_sum / energy : 0.;
+  t.inlier_correlation = residual_edge_correlation(adjacency, result, input,
+                                                   [&t, &tested](std::size_t v) { return tested[v] && !t.outlier[v]; });
   t.sparse = t.outliers > 0 && t.inlier_correlation >= Sparse_noise_rules::min_inlier_correlation;
   return t;
 }

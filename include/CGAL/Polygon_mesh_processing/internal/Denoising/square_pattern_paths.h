@@ -62,7 +62,7 @@ struct Square_pattern_frame
   }
 
   // The region (0..5) of a neighbour with centroid p, or -1 if p projects
-  // inside face i or on its border (dropped, NOTES 6). A degenerate face i
+  // inside face i or on its border (dropped: section 4 has no region for it). A degenerate face i
   // puts every neighbour in region 0.
   int region(const Vec3& p) const
   {
@@ -100,9 +100,8 @@ constexpr std::size_t square_pattern_counting_max = 128;
 // at r = 4d) faster than a comparison sort, whose every step is a coin toss
 // (measured on 1.2M faces: the whole forest 2.11 s with std::sort, 1.81 s
 // with this). Larger regions are sorted, in `sorted`.
-inline void sort_square_pattern_region(const double* distance, const std::uint32_t* input,
-                                       const std::uint32_t* faces, std::size_t n, std::uint32_t* out,
-                                       Square_pattern_scratch::Sorted& sorted)
+inline void sort_square_pattern_region(const double* distance, const std::uint32_t* input, const std::uint32_t* faces,
+                                       std::size_t n, std::uint32_t* out, Square_pattern_scratch::Sorted& sorted)
 {
   if(n > square_pattern_counting_max)
   {
@@ -128,7 +127,7 @@ inline void sort_square_pattern_region(const double* distance, const std::uint32
 // Appends to `out` the nodes of face i's square-pattern tree over its
 // neighbours [nb, nb_end), region after region, each sorted by distance, and
 // returns the region sizes (Path_forest::square_regions). Neighbours whose
-// projected centroid falls inside face i are dropped (NOTES 6). For a
+// projected centroid falls inside face i are dropped (section 4 has no region for them). For a
 // degenerate face i (zero normal) the regions are undefined: its neighbours
 // are appended by distance and the sizes are all 0 (all hang from i).
 inline std::array<std::uint32_t, 6> square_pattern_tree(const Flat_mesh& m, const Face_data& fd, std::size_t i,
@@ -257,7 +256,10 @@ Path_forest square_pattern_paths_within(const Flat_mesh& m, const Face_data& fd,
   // the search reaches the faces geometric_neighborhoods() lists, in another
   // order; the trees do not depend on the order (they are sorted)
   return square_pattern_forest<ConcurrencyTag>(
-      m, fd, compact_min_nodes, [&m] { return Scratch{Face_fan_search(m), {}}; },
+      m, fd, compact_min_nodes,
+      [&m] {
+        return Scratch{Face_fan_search(m), {}};
+      },
       [&](std::size_t i, Scratch& s) {
         s.search.run(i, m, fd.centroids, r2);
         return std::make_pair(s.search.neighbors_begin(), s.search.neighbors_end());

@@ -69,8 +69,8 @@ inline bool folds(const std::array<std::uint32_t, 3>& t, const std::vector<Vec3>
   const Vec3 n1 = cross(b1 - a1, c1 - a1);
   const bool turned_from_reference = (dot(n0, reference) > 0.) & !(dot(n1, reference) > 0.); // (c)
   const double scale = degenerate_face_tolerance * (squared_norm(e0) + squared_norm(f0) + squared_norm(c0 - b0));
-  const bool oriented = squared_norm(n0) > scale * scale; // not degenerate before the step
-  const bool turned = !(dot(n1, n0) > 0.);                                        // (a)
+  const bool oriented = squared_norm(n0) > scale * scale;                           // not degenerate before the step
+  const bool turned = !(dot(n1, n0) > 0.);                                          // (a)
   const bool turned_from_target = (dot(n0, target) > 0.) & !(dot(n1, target) > 0.); // (b)
   return turned_from_reference | (oriented & (turned | turned_from_target));
 }
@@ -88,7 +88,7 @@ void apply_fold_safeguard(const Flat_mesh& m, const std::vector<Vec3>& points, s
   std::vector<double>& scale = guard.scale;
   std::vector<char>& bad = guard.bad;
   std::vector<std::uint32_t>&stamp = guard.stamp, &bad_faces = guard.bad_faces, &moved = guard.moved,
-                             &recheck = guard.recheck;
+  &recheck = guard.recheck;
   const std::size_t nf = m.number_of_faces(), nv = m.number_of_vertices();
   bad.resize(nf);
   for_each_chunk<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {

@@ -1,0 +1,307 @@
+// Copyright (c) 2026 The intrinsic denoising package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The driver of intrinsic_denoising() (Algorithm 1): reads the options once,
+// then either runs the automatic selection (automatic_selection.h) or one
+// denoising with the parameters given and automatic defaults for the others,
+// ended by the stopping rule if it is on; the result goes back to the mesh
+// in one write.
+
+#ifndef CGAL_PMP_INTERNAL_DENOISING_INTRINSIC_DENOISER_H
+#define CGAL_PMP_INTERNAL_DENOISING_INTRINSIC_DENOISER_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/named_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
+#include <CGAL/Polygon_mesh_processing/intrinsic_denoising_report.h>
+
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Denoising {
+
+template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters>
+class Intrinsic_denoiser
+{
+  typedef parameters::Default_named_parameters Defaults;
+  template <typename Tag>
+  static constexpr bool given = !parameters::is_default_parameter<NamedParameters, Tag>::value;
+
+public:
+  static constexpr bool keep_normals = given<internal_np::face_normal_t>;
+
+  // Reads and checks the options; `tmesh` must have a face.
+  Intrinsic_denoiser(const TriangleMesh& tmesh, const NamedParameters& np) : tmesh_(tmesh), np_(np), maps_(tmesh, np)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    report_.automatic_parameters = choose_parameter(get_parameter(np, internal_np::automatic_parameters), true);
+    stop_rule_ = choose_parameter(get_parameter(np, internal_np::stop_when_converged),
+                                  report_.automatic_parameters && !given<internal_np::number_of_iterations_t>);
+    given_noise_ = choose_parameter(get_parameter(np, internal_np::noise_level), -1.);
+    if constexpr(given<internal_np::noise_level_t>)
+      require_non_negative(given_noise_, fname, "noise_level");
+    vertex_iterations_ =
+        choose_parameter(get_parameter(np, internal_np::vertex_iterations), Intrinsic_defaults::vertex_iterations);
+    vertex_update_ = choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER);
+    prevent_folds_ = choose_parameter(get_parameter(np, internal_np::prevent_folds), true);
+  }
+
+  // Whether the automatic selection runs: only when the kernel, the radius,
+  // the number of iterations and the noise level are all left to the
+  // automatic mode.
+  bool uses_automatic_selection() const
+  {
+    constexpr bool kernel_or_radius_given = given<internal_np::sigma_spatial_t> || given<internal_np::sigma_range_t> ||
+                                            given<internal_np::neighbor_radius_t> ||
+                                            given<internal_np::relative_neighbor_radius_t>;
+    return report_.automatic_parameters && stop_rule_ && !given<internal_np::number_of_iterations_t> &&
+           !kernel_or_radius_given && given_noise_ < 0.;
+  }
+
+  // The automatic selection: runs the candidates of Selection_rules, sharing
+  // the paths of each radius, keeps the one chosen (denoised again with only
+  // its outliers moving if the noise is sparse) and describes all of them in
+  // the report.
+  Candidate_run select_automatically()
+  {
+    Automatic_selection<ConcurrencyTag> selection(vertex_iterations_, prevent_folds_, keep_normals, vertex_update_);
+    const std::vector<char> constrained = maps_.constrained(tmesh_);
+    constexpr std::size_t n = Selection_rules::number_of_candidates;
+    const auto progress = progress_callback();
+    for(std::size_t c = 0; c < n; ++c)
+    {
+      const Selection_rules::Candidate& candidate = Selection_rules::candidates[c];
+      if(c == 0 || candidate.relative_radius != Selection_rules::candidates[c - 1].relative_radius)
+        selection.setup_paths(candidate_setup(candidate), constrained);
+      selection.run(candidate.sigma);
+      progress(c + 1, n);
+    }
+    const std::size_t best = selection.choose();
+    std::vector<Candidate_run>& runs = selection.runs();
+    report_selection(selection, best);
+
+    // Sparse noise (sparse_noise.h): if the kept result's residual says that
+    // only a few vertices were noisy, those alone are denoised, from the
+    // input, with the kept kernel, radius and number of iterations.
+    if(runs[best].iterations == 0)
+      return std::move(runs[best]);
+    const Sparse_noise_test test = selection.test_sparse_noise(runs[best]);
+    report_.inlier_residual_correlation = test.inlier_correlation;
+    if(!test.sparse)
+      return std::move(runs[best]);
+    const Selection_rules::Candidate& kept = Selection_rules::candidates[best];
+    if(kept.relative_radius != Selection_rules::candidates[n - 1].relative_radius)
+      selection.setup_paths(candidate_setup(kept), constrained); // the paths of the kept candidate's radius
+    Candidate_run outliers_only = selection.run_outliers_only(kept.sigma, report_.iterations, test.outlier);
+    report_.outlier_vertices = test.outliers;
+    report_.displacement = outliers_only.trajectory.back().rms;
+    return outliers_only;
+  }
+
+  // One denoising from the input with the parameters given and, for the
+  // others, the defaults of defaults_for(); ended by the stopping rule if it
+  // is on (not tested before Automatic_rules::min_iterations unless there is
+  // no noise). The report describes it.
+  Candidate_run run_with_rules()
+  {
+    Intrinsic_setup s = make_intrinsic_setup<ConcurrencyTag>(
+        tmesh_, np_, maps_, fname, [this](const Flat_mesh& mesh) { return defaults_for(mesh); });
+    const unsigned int iterations = report_setup(s);
+    const auto progress = progress_callback();
+
+    // the vertex update reads the vertices of nearby faces: number them as the
+    // (Morton-ordered) faces use them; the points go back in input order
+    if(!s.mesh.input_face.empty())
+      reorder_vertices_for_locality(s.mesh);
+    const std::vector<char> fixed = s.mesh.vertex_values_from_input_order(maps_.constrained(tmesh_));
+    Fold_safeguard guard;
+    guard.enabled = prevent_folds_;
+    Least_squares_recovery recovery = make_vertex_recovery(vertex_update_);
+    const std::vector<Vec3> input_normals = guard.enabled ? s.input_faces.normals : std::vector<Vec3>();
+    guard.reference = &input_normals;
+
+    std::vector<Vec3>& points = s.mesh.points;
+    const std::vector<Vec3> input_points = stop_rule_ ? points : std::vector<Vec3>();
+    std::vector<Vec3> previous, last_filtered;
+    report_.stop_reason = Intrinsic_stop_reason::ITERATION_LIMIT;
+    iterate_filter<ConcurrencyTag>(
+        s, s.kernel, std::move(s.input_faces), points, fixed, vertex_iterations_, guard, iterations,
+        [&](unsigned int k, const std::vector<Vec3>& p, std::vector<Vec3>& filtered) {
+          report_.iterations = k;
+          progress(std::size_t(k), std::size_t(iterations));
+          const bool go_on = !(stop_rule_ && k < iterations && stops(s.mesh, p, input_points, filtered, previous, k));
+          if(keep_normals && (!go_on || k == iterations))
+            last_filtered = filtered;
+          if(go_on && stop_rule_)
+            previous.swap(filtered); // the next pass overwrites all of `filtered`
+          return go_on;
+        },
+        &recovery);
+    if(stop_rule_)
+      report_.displacement = relative_rms_displacement(s.mesh, points, input_points, report_.mean_edge_length);
+    Candidate_run r;
+    r.points = s.mesh.vertex_values_in_input_order(points);
+    if constexpr(keep_normals)
+      r.normals = s.mesh.in_input_order(last_filtered);
+    return r;
+  }
+
+  // Writes the result's points (and its filtered normals, if asked) to `tmesh`.
+  void write_result(TriangleMesh& tmesh, const Candidate_run& result) const
+  {
+    maps_.write_points(tmesh, result.points);
+    if constexpr(keep_normals)
+      maps_.write_face_vectors(tmesh, result.normals, parameters::get_parameter(np_, internal_np::face_normal));
+  }
+
+  const Intrinsic_denoising_report& report() const { return report_; }
+
+private:
+  static constexpr const char* fname = "intrinsic_denoising()";
+
+  auto progress_callback() const
+  {
+    return parameters::choose_parameter(parameters::get_parameter(np_, internal_np::progress_callback), No_progress());
+  }
+
+  // The paths of a candidate of the automatic selection.
+  Intrinsic_setup candidate_setup(const Selection_rules::Candidate& candidate) const
+  {
+    Setup_defaults defaults;
+    defaults.sigma_spatial = defaults.sigma_range = candidate.sigma;
+    defaults.relative_radius = candidate.relative_radius;
+    return make_intrinsic_setup<ConcurrencyTag>(tmesh_, np_, maps_, fname,
+                                                [&defaults](const Flat_mesh&) { return defaults; });
+  }
+
+  // Describes the candidates and the one kept (`best`) in the report.
+  void report_selection(const Automatic_selection<ConcurrencyTag>& selection, std::size_t best)
+  {
+    report_.candidates.clear();
+    for(const Candidate_run& r : selection.runs())
+    {
+      Intrinsic_candidate_report c;
+      c.sigma = r.sigma;
+      c.relative_neighbor_radius = r.relative_radius;
+      c.iterations = r.iterations;
+      c.stopped_by_correlation = r.stopped_by_correlation;
+      c.residual_rms = r.iterations > 0 ? r.trajectory[r.iterations - 1].rms : 0.;
+      c.residual_correlation = r.iterations > 0 ? r.trajectory[r.iterations - 1].correlation : 0.;
+      c.flat_share = r.flat_share;
+      c.score = r.score;
+      report_.candidates.push_back(c);
+    }
+    report_.chosen_candidate = best;
+    const Intrinsic_candidate_report& w = report_.candidates[best];
+    report_.mean_edge_length = selection.mean_edge_length_of_input();
+    report_.noise_level = w.residual_rms;
+    report_.noise_level_estimated = true;
+    report_.displacement = w.residual_rms;
+    report_.sigma_spatial = report_.sigma_range = w.sigma;
+    report_.relative_neighbor_radius = w.relative_neighbor_radius;
+    report_.neighbor_radius = w.relative_neighbor_radius * selection.centroid_distance();
+    report_.vertex_iterations = vertex_iterations_;
+    report_.vertex_update = vertex_update_;
+    report_.maximum_iterations = Selection_rules::max_iterations;
+    report_.iterations = w.iterations;
+    report_.stop_reason =
+        w.stopped_by_correlation ? Intrinsic_stop_reason::RESIDUAL_CORRELATED : Intrinsic_stop_reason::ITERATION_LIMIT;
+  }
+
+  // The defaults of the parameters not given, from the noise level of `mesh`
+  // (the input), which is estimated unless given; the noise level is needed
+  // by the automatic parameters and by the stopping rule.
+  Setup_defaults defaults_for(const Flat_mesh& mesh)
+  {
+    const bool need_noise = report_.automatic_parameters || stop_rule_;
+    if(need_noise && given_noise_ < 0.)
+    {
+      // the estimate measures the mean edge length too
+      const Noise_estimate estimate = estimate_noise<ConcurrencyTag>(mesh);
+      report_.mean_edge_length = estimate.mean_edge_length;
+      report_.noise_level = estimate.relative_noise;
+    }
+    else
+    {
+      report_.mean_edge_length = mean_edge_length<ConcurrencyTag>(mesh);
+      report_.noise_level = need_noise ? given_noise_ : 0.;
+    }
+    if(need_noise)
+    {
+      report_.noise_level_estimated = given_noise_ < 0.;
+      choice_ = automatic_choice(report_.noise_level);
+    }
+    return report_.automatic_parameters ? choice_.kernel : Setup_defaults();
+  }
+
+  // Writes the parameters of setup `s` to the report; returns the iteration
+  // limit.
+  unsigned int report_setup(const Intrinsic_setup& s)
+  {
+    const unsigned int iterations = parameters::choose_parameter(
+        parameters::get_parameter(np_, internal_np::number_of_iterations),
+        report_.automatic_parameters ? choice_.max_iterations : Intrinsic_defaults::iterations);
+    report_.sigma_spatial = s.kernel.sigma_spatial;
+    report_.sigma_range = s.kernel.sigma_range;
+    report_.neighbor_radius = s.radius;
+    report_.relative_neighbor_radius = s.centroid_distance > 0. ? s.radius / s.centroid_distance : 0.;
+    report_.vertex_iterations = vertex_iterations_;
+    report_.maximum_iterations = iterations;
+    report_.displacement = 0.;
+    report_.vertex_update = vertex_update_;
+    return iterations;
+  }
+
+  // The stopping rule after iteration k (points `p`, filtered normals
+  // `filtered`, those of the iteration before `previous`): stop when the
+  // vertices have moved by the noise level or the normals no longer change;
+  // not before min_iterations unless there is no noise. Sets the stop reason.
+  bool stops(const Flat_mesh& mesh, const std::vector<Vec3>& p, const std::vector<Vec3>& input_points,
+             const std::vector<Vec3>& filtered, const std::vector<Vec3>& previous, unsigned int k)
+  {
+    if(k < Automatic_rules::min_iterations && report_.noise_level >= Automatic_rules::min_noise)
+      return false;
+    report_.displacement = relative_rms_displacement(mesh, p, input_points, report_.mean_edge_length);
+    if(report_.displacement >= Automatic_rules::displacement_fraction * report_.noise_level)
+    {
+      report_.stop_reason = Intrinsic_stop_reason::NOISE_LEVEL_REACHED;
+      return true;
+    }
+    if(!previous.empty() && mean_angle_degrees(filtered, previous) < Automatic_rules::change_tolerance)
+    {
+      report_.stop_reason = Intrinsic_stop_reason::CONVERGED;
+      return true;
+    }
+    return false;
+  }
+
+  const TriangleMesh& tmesh_;
+  const NamedParameters& np_;
+  const Mesh_maps<TriangleMesh, NamedParameters> maps_;
+  Intrinsic_denoising_report report_;
+  bool stop_rule_ = false;
+  double given_noise_ = -1.;
+  unsigned int vertex_iterations_ = 0;
+  Vertex_update vertex_update_ = Vertex_update::PAPER;
+  bool prevent_folds_ = true;
+  Automatic_choice choice_;
+};
+
+} // namespace Denoising
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

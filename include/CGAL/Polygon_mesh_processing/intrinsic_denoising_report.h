@@ -1,0 +1,116 @@
+// Copyright (c) 2026 The intrinsic denoising package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// What intrinsic_denoising() reports: the parameters it used, the noise
+// level, the candidates of its automatic selection, why it stopped.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_REPORT_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_REPORT_H
+
+#include <CGAL/Polygon_mesh_processing/denoising_types.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_parameters.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+
+/// \ingroup PMP_denoising_grp
+/// Why `intrinsic_denoising()` stopped iterating.
+enum class Intrinsic_stop_reason
+{
+  /// it ran `maximum_iterations` iterations
+  ITERATION_LIMIT,
+  /// stopping rule: the RMS vertex displacement from the input reached the
+  /// noise level (times `Intrinsic_denoising_report::displacement_fraction`)
+  NOISE_LEVEL_REACHED,
+  /// stopping rule: the filtered normals changed by less than
+  /// `Intrinsic_denoising_report::change_tolerance` degrees on average
+  CONVERGED,
+  /// the automatic selection: the residual between the input and the result
+  /// became correlated across edges (shape, not noise, was being removed)
+  RESIDUAL_CORRELATED
+};
+
+/// \ingroup PMP_denoising_grp
+/// One candidate setting of the automatic selection of
+/// `intrinsic_denoising()`, and the evidence it was judged on.
+struct Intrinsic_candidate_report
+{
+  /// \f$\sigma_s = \sigma_r\f$ of the candidate
+  double sigma = 0.;
+  /// its radius relative to \f$d\f$
+  double relative_neighbor_radius = 0.;
+  /// the iterations it ran (it stopped at the first whose residual correlation
+  /// reached the threshold, or at the limit)
+  unsigned int iterations = 0;
+  /// whether the residual correlation stopped it (`false`: the limit)
+  bool stopped_by_correlation = false;
+  /// the RMS of the residual (input minus result) at its stop, relative to the
+  /// mean edge length
+  double residual_rms = 0.;
+  /// the residual correlation across edges at its stop
+  double residual_correlation = 0.;
+  /// the share of the interior edges of its result whose faces differ by less
+  /// than 1 degree (-1: no interior edge)
+  double flat_share = -1.;
+  /// its score: the residual correlation where its residual RMS reached the
+  /// common comparison level (the lowest wins, among the candidates whose
+  /// `flat_share` is within 0.05 of the largest if that is at least 0.3)
+  double score = 0.;
+};
+
+/// \ingroup PMP_denoising_grp
+/// What `intrinsic_denoising()` did: the parameter values it used (given or
+/// chosen automatically), the noise level, and how many iterations it ran.
+struct Intrinsic_denoising_report
+{
+  /// whether the parameters not given were derived from the mesh
+  bool automatic_parameters = false;
+  /// the noise level, as a standard deviation relative to the mean edge length:
+  /// with the automatic selection, the RMS of the kept candidate's residual
+  /// (input minus result); otherwise estimated or given (0 if neither the
+  /// automatic mode nor the stopping rule needed it)
+  double noise_level = 0.;
+  /// whether `noise_level` was estimated (`false`: given by the caller)
+  bool noise_level_estimated = false;
+  /// the mean edge length of the input mesh
+  double mean_edge_length = 0.;
+  /// \f$\sigma_s\f$ and \f$\sigma_r\f$ used
+  double sigma_spatial = 0., sigma_range = 0.;
+  /// the neighbourhood radius used, absolute and relative to \f$d\f$
+  double neighbor_radius = 0., relative_neighbor_radius = 0.;
+  /// \f$v_{iter}\f$ used
+  unsigned int vertex_iterations = 0;
+  /// the vertex update used
+  Vertex_update vertex_update = Vertex_update::PAPER;
+  /// the iteration limit, and the iterations run
+  unsigned int maximum_iterations = 0, iterations = 0;
+  /// why the iterations stopped
+  Intrinsic_stop_reason stop_reason = Intrinsic_stop_reason::ITERATION_LIMIT;
+  /// with the stopping rule or the automatic selection: the RMS vertex
+  /// displacement from the input at the end, relative to the mean edge length
+  double displacement = 0.;
+  /// with the automatic selection: the correlation across edges of the kept
+  /// candidate's residual at the vertices it did not flag as outliers (the
+  /// sparse-noise test; 0 if not measured)
+  double inlier_residual_correlation = 0.;
+  /// with the automatic selection: the number of vertices taken for sparse
+  /// (impulsive) noise, which alone were then denoised, all others staying in
+  /// place; 0 if the noise was taken for dense (every vertex denoised)
+  std::size_t outlier_vertices = 0;
+  /// the candidates of the automatic selection (empty if it did not run:
+  /// see `intrinsic_denoising()` for when it does), in the order they ran
+  std::vector<Intrinsic_candidate_report> candidates;
+  /// the index in `candidates` of the one kept
+  std::size_t chosen_candidate = 0;
+  /// the constants of the stopping rule
+  static constexpr double displacement_fraction = internal::Denoising::Automatic_rules::displacement_fraction;
+  static constexpr double change_tolerance = internal::Denoising::Automatic_rules::change_tolerance;
+};
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif
