@@ -16,7 +16,7 @@
 // count. Errors of the library (std::invalid_argument) become ValueError with
 // the library's message.
 
-#include "denoise_mesh_file.h"
+#include <denoising_support/mesh_file.h>
 
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
 #include <CGAL/Polygon_mesh_processing/bilateral_mesh_denoising.h>

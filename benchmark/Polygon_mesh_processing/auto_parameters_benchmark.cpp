@@ -26,20 +26,16 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
-#include <CGAL/Polygon_mesh_processing/bilateral_mesh_denoising.h>
-#include <CGAL/Polygon_mesh_processing/bilateral_normal_denoising.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
-#include <CGAL/Polygon_mesh_processing/fast_feature_preserving_denoising.h>
-#include <CGAL/Polygon_mesh_processing/guided_normal_denoising.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/noise_estimate.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
-#include <CGAL/Polygon_mesh_processing/l0_denoising.h>
-#include <CGAL/Polygon_mesh_processing/non_iterative_denoising.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
-#include "../../test/Polygon_mesh_processing/synthetic_meshes.h"
+#include <denoising_support/benchmark_common.h>
+#include <denoising_support/classic_method_list.h>
+#include <denoising_support/synthetic_meshes.h>
 
 #include <algorithm>
 #include <chrono>
@@ -65,8 +61,7 @@ struct Input
 
 static bool load(const char* file, Mesh& m)
 {
-  return CGAL::IO::read_polygon_mesh(CGAL::data_file_path(std::string("meshes/") + file), m) && !m.is_empty() &&
-         CGAL::is_triangle_mesh(m);
+  return denoising_support::read_triangle_mesh(CGAL::data_file_path(std::string("meshes/") + file), m);
 }
 
 struct Extra
@@ -254,20 +249,13 @@ static Grid_best grid_search(const Input& in, bool trace, const Grid& grid = sta
 
 // E_n of the classic methods with their defaults on `in`, in the order of
 // the table's columns (classic_names).
-static const char* const classic_names[] = {"FDC03", "JDD03", "SRML07", "ZFAT11", "HS13", "ZDZ15"};
 static std::vector<double> classic_errors(const Input& in)
 {
-  const std::vector<std::function<void(Mesh&)>> methods = {[](Mesh& m) { PMP::bilateral_mesh_denoising(m); },
-                                                           [](Mesh& m) { PMP::non_iterative_denoising(m); },
-                                                           [](Mesh& m) { PMP::fast_feature_preserving_denoising(m); },
-                                                           [](Mesh& m) { PMP::bilateral_normal_denoising(m); },
-                                                           [](Mesh& m) { PMP::l0_denoising(m); },
-                                                           [](Mesh& m) { PMP::guided_normal_denoising(m); }};
   std::vector<double> errors;
-  for(const auto& method : methods)
+  for(const auto& method : denoising_support::classic_methods<CGAL::Sequential_tag, Mesh>())
   {
     Mesh m = in.noisy;
-    method(m);
+    method.run(m);
     errors.push_back(PMP::face_normal_error(m, in.reference));
   }
   return errors;
@@ -314,7 +302,8 @@ int main(int argc, char** argv)
       const std::size_t best = std::size_t(std::min_element(classic.begin(), classic.end()) - classic.begin());
       const double best_En = classic[best];
       std::printf("| %s | %s | %.3f | (%.1f, %.1f, %u, %u) | %.3f (%s) |\n", in.name.c_str(), in.noise.c_str(), g.En,
-                  g.sigma, g.radius, g.k, g.v, best_En, classic_names[best]);
+                  g.sigma, g.radius, g.k, g.v, best_En,
+                  denoising_support::classic_methods<CGAL::Sequential_tag, Mesh>()[best].name);
       std::fflush(stdout);
     }
     return 0;
@@ -356,9 +345,9 @@ int main(int argc, char** argv)
   for(const Input& in : inputs)
   {
     Mesh a = in.noisy;
-    const auto t0 = std::chrono::steady_clock::now();
+    const denoising_support::Stopwatch watch;
     const PMP::Intrinsic_denoising_report r = PMP::intrinsic_denoising<Tag>(a);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double seconds = watch.seconds();
     const double auto_En = PMP::face_normal_error(a, in.reference);
     const char* stop = r.stop_reason == PMP::Intrinsic_stop_reason::NOISE_LEVEL_REACHED   ? "noise level"
                        : r.stop_reason == PMP::Intrinsic_stop_reason::CONVERGED           ? "converged"

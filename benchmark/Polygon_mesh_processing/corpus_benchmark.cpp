@@ -41,22 +41,20 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
-#include <CGAL/Polygon_mesh_processing/bilateral_mesh_denoising.h>
-#include <CGAL/Polygon_mesh_processing/bilateral_normal_denoising.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
-#include <CGAL/Polygon_mesh_processing/fast_feature_preserving_denoising.h>
-#include <CGAL/Polygon_mesh_processing/guided_normal_denoising.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/residual_statistics.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
-#include <CGAL/Polygon_mesh_processing/l0_denoising.h>
-#include <CGAL/Polygon_mesh_processing/non_iterative_denoising.h>
 #include <CGAL/Polygon_mesh_processing/smooth_shape.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <denoising_support/benchmark_common.h>
+#include <denoising_support/classic_method_list.h>
+
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -115,7 +113,7 @@ std::string meshes_dir() { return CGAL::data_file_path("meshes"); }
 bool load(const std::string& file, Mesh& m)
 {
   m.clear();
-  return CGAL::IO::read_polygon_mesh(meshes_dir() + "/" + file, m) && !m.is_empty() && CGAL::is_triangle_mesh(m);
+  return denoising_support::read_triangle_mesh(meshes_dir() + "/" + file, m);
 }
 
 double edge_length_ratio(const Mesh& m)
@@ -197,19 +195,12 @@ void make_noisy(const Input& in, Mesh& reference, Mesh& noisy)
   }
 }
 
-const char* const classic_names[] = {"FDC03", "JDD03", "SRML07", "ZFAT11", "HS13", "ZDZ15"};
-constexpr std::size_t n_classic = 6;
-
-// The six classic methods at their defaults, in the order of classic_names.
-std::vector<std::function<void(Mesh&)>> classic_methods()
+// The six classic methods at their defaults (denoising_support/classic_method_list.h).
+const std::array<denoising_support::Classic_method<Mesh>, 6>& classic_methods()
 {
-  return {[](Mesh& m) { PMP::bilateral_mesh_denoising<Tag>(m); },
-          [](Mesh& m) { PMP::non_iterative_denoising<Tag>(m); },
-          [](Mesh& m) { PMP::fast_feature_preserving_denoising<Tag>(m); },
-          [](Mesh& m) { PMP::bilateral_normal_denoising<Tag>(m); },
-          [](Mesh& m) { PMP::l0_denoising<Tag>(m); },
-          [](Mesh& m) { PMP::guided_normal_denoising<Tag>(m); }};
+  return denoising_support::classic_methods<Tag, Mesh>();
 }
+constexpr std::size_t n_classic = 6;
 
 std::vector<double> classic_errors(const Mesh& noisy, const Mesh& reference)
 {
@@ -217,7 +208,7 @@ std::vector<double> classic_errors(const Mesh& noisy, const Mesh& reference)
   for(const auto& method : classic_methods())
   {
     Mesh m = noisy;
-    method(m);
+    method.run(m);
     errors.push_back(PMP::face_normal_error(m, reference));
   }
   return errors;
@@ -554,10 +545,10 @@ template <typename Method>
 Outcome outcome(const Mesh& noisy, const Mesh& reference, const Method& method)
 {
   Mesh m = noisy;
-  const auto t0 = std::chrono::steady_clock::now();
+  const denoising_support::Stopwatch watch;
   method(m);
   Outcome o;
-  o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  o.seconds = watch.seconds();
   o.En = PMP::face_normal_error(m, reference);
   o.Ev = PMP::vertex_position_error(m, reference);
   o.turned = turned_faces(m, noisy);
@@ -630,7 +621,7 @@ void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool 
       for(const auto& c : classic_methods())
         if(baselines)
         {
-          const Outcome r = outcome(noisy, reference, c);
+          const Outcome r = outcome(noisy, reference, c.run);
           if(r.En < best_classic.En)
             best_classic = r;
         }
@@ -747,7 +738,7 @@ int main(int argc, char** argv)
     {
       if(done.count(in.key()))
         continue;
-      const auto t0 = std::chrono::steady_clock::now();
+      const denoising_support::Stopwatch watch;
       Mesh reference, noisy;
       make_noisy(in, reference, noisy);
       Reference r;
@@ -765,8 +756,7 @@ int main(int argc, char** argv)
       if(trace)
         std::fflush(trace);
       std::printf("%s: oracle %.3f (sigma %.1f, r %.0fd, k %u), %.1f s\n", in.name().c_str(), r.oracle_En,
-                  r.oracle_sigma, r.oracle_radius, r.oracle_k,
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                  r.oracle_sigma, r.oracle_radius, r.oracle_k, watch.seconds());
       std::fflush(stdout);
     }
     std::fclose(out);
@@ -799,12 +789,12 @@ int main(int argc, char** argv)
     Mesh reference, noisy;
     make_noisy(in, reference, noisy);
     Mesh a = noisy, f = noisy;
-    auto t0 = std::chrono::steady_clock::now();
+    denoising_support::Stopwatch watch;
     const PMP::Intrinsic_denoising_report rep = PMP::intrinsic_denoising<Tag>(a);
-    row.auto_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    t0 = std::chrono::steady_clock::now();
+    row.auto_s = watch.seconds();
+    watch.restart();
     PMP::intrinsic_denoising<Tag>(f, CGAL::parameters::automatic_parameters(false));
-    row.fixed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    row.fixed_s = watch.seconds();
     row.auto_En = PMP::face_normal_error(a, reference);
     row.auto_Ev = PMP::vertex_position_error(a, reference);
     row.fixed_En = PMP::face_normal_error(f, reference);

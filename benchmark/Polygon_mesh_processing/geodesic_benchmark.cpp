@@ -35,7 +35,9 @@
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
-#include "../../test/Polygon_mesh_processing/synthetic_meshes.h"
+#include <denoising_support/benchmark_common.h>
+
+#include <denoising_support/synthetic_meshes.h>
 
 #include <algorithm>
 #include <chrono>
@@ -54,9 +56,9 @@ namespace D = PMP::internal::Denoising;
 template <typename F>
 static double seconds(const F& f)
 {
-  const auto start = std::chrono::steady_clock::now();
+  const denoising_support::Stopwatch stopwatch;
   f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return stopwatch.seconds();
 }
 
 struct Row

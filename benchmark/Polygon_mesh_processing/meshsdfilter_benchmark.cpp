@@ -18,6 +18,8 @@
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <denoising_support/benchmark_common.h>
+
 #include <MeshSDFilter/MeshNormalDenoising.h>
 
 #include <algorithm>
@@ -130,10 +132,10 @@ int main(int argc, char** argv)
       std::ostringstream silence; // the library reports progress on std::cout
       std::streambuf* const saved = std::cout.rdbuf(silence.rdbuf());
       const std::clock_t c0 = std::clock();
-      const auto t0 = std::chrono::steady_clock::now();
+      const denoising_support::Stopwatch watch;
       Mesh r;
       const bool ok = run(param, r);
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double wall = watch.seconds();
       const double c = double(std::clock() - c0) / CLOCKS_PER_SEC;
       std::cout.rdbuf(saved);
       if(!ok)

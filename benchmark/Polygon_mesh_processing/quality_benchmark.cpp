@@ -20,7 +20,9 @@
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
-#include "../../test/Polygon_mesh_processing/synthetic_meshes.h"
+#include <denoising_support/benchmark_common.h>
+
+#include <denoising_support/synthetic_meshes.h>
 
 #include <chrono>
 #include <cstdio>
@@ -59,13 +61,13 @@ struct Result
 static Result run(const Model& m, const Mesh& noisy, const Setting& s)
 {
   Mesh out = noisy;
-  const auto t0 = std::chrono::steady_clock::now();
+  const denoising_support::Stopwatch watch;
   PMP::intrinsic_denoising<CGAL::Sequential_tag>(out, CGAL::parameters::number_of_iterations(s.iterations)
                                                           .vertex_iterations(s.vertex_iterations)
                                                           .sigma_spatial(s.sigma_s)
                                                           .sigma_range(s.sigma_r)
                                                           .relative_neighbor_radius(s.relative_radius));
-  const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double sec = watch.seconds();
   return {PMP::face_normal_error(out, m.reference), PMP::vertex_position_error(out, m.reference), sec};
 }
 

@@ -40,6 +40,8 @@
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <denoising_support/benchmark_common.h>
+
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
 #endif
@@ -69,9 +71,9 @@ static double seconds(const F& f, int repeat = 1)
   double best = 1e30;
   for(int r = 0; r < repeat; ++r)
   {
-    const auto t0 = std::chrono::steady_clock::now();
+    const denoising_support::Stopwatch watch;
     f();
-    best = (std::min)(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    best = (std::min)(best, watch.seconds());
   }
   return best;
 }
@@ -348,9 +350,9 @@ static std::pair<double, double> wall_and_cpu(const F& f, int repeat)
   for(int r = 0; r < repeat; ++r)
   {
     const std::clock_t c0 = std::clock();
-    const auto t0 = std::chrono::steady_clock::now();
+    const denoising_support::Stopwatch watch;
     f();
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double wall = watch.seconds();
     if(wall < best.first)
       best = {wall, double(std::clock() - c0) / CLOCKS_PER_SEC};
   }

@@ -38,8 +38,10 @@
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
-#include "../../examples/Polygon_mesh_processing/comparison_report.h"
-#include "../../test/Polygon_mesh_processing/synthetic_meshes.h"
+#include <denoising_support/benchmark_common.h>
+
+#include <denoising_support/comparison_report.h>
+#include <denoising_support/synthetic_meshes.h>
 
 #include <array>
 #include <chrono>
@@ -336,7 +338,7 @@ int main(int argc, char** argv)
   // results[model][method]
   std::vector<std::vector<Result>> results(models.size(), std::vector<Result>(all_methods.size()));
   std::vector<double> noisy_En(models.size()), noisy_Ev(models.size());
-  const auto start = std::chrono::steady_clock::now();
+  const denoising_support::Stopwatch stopwatch;
   for(std::size_t mi = 0; mi < models.size(); ++mi)
   {
     const Model& model = models[mi];
@@ -352,9 +354,9 @@ int main(int argc, char** argv)
       for(const Setting& s : grid)
       {
         Mesh out = noisy;
-        const auto t0 = std::chrono::steady_clock::now();
+        const denoising_support::Stopwatch watch;
         method.run(out, s);
-        const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const double sec = watch.seconds();
         const double En = PMP::face_normal_error(out, model.reference);
         if(verbose)
           std::fprintf(stderr, "%s %s [%s]: E_n %.3f E_v %.4e %.2f s\n", model.name.c_str(), method.name.c_str(),
@@ -371,7 +373,7 @@ int main(int argc, char** argv)
       }
       std::fprintf(stderr, "%s %s: best E_n %.3f [%s] (%zu settings, %.0f s so far)\n", model.name.c_str(),
                    method.name.c_str(), best.En, method.describe(best.setting).c_str(), grid.size(),
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+                   stopwatch.seconds());
     }
     if(!mesh_dir.empty() || !report_dir.empty())
     {
@@ -521,8 +523,7 @@ int main(int argc, char** argv)
       md << "| " << models[mi].name << " | " << method.name << " | " << method.describe(results[mi][k].setting) << " | "
          << (models[mi].large ? method.large_grid : method.grid).size() << " |\n";
     }
-  std::snprintf(buf, sizeof(buf), "\nTotal run time: %.0f s\n",
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  std::snprintf(buf, sizeof(buf), "\nTotal run time: %.0f s\n", stopwatch.seconds());
   md << buf;
 
   std::cout << md.str();

@@ -7,18 +7,13 @@
 // Run `denoise --help` for the manual (also in doc/Polygon_mesh_processing/denoise_help.txt).
 // Exit status: 0 success, 1 bad input or I/O error, 2 bad usage.
 
-#include "comparison_report.h"
-#include "denoise_mesh_file.h"
+#include <denoising_support/classic_method_list.h>
+#include <denoising_support/comparison_report.h>
+#include <denoising_support/mesh_file.h>
 
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
-#include <CGAL/Polygon_mesh_processing/bilateral_mesh_denoising.h>
-#include <CGAL/Polygon_mesh_processing/bilateral_normal_denoising.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
-#include <CGAL/Polygon_mesh_processing/fast_feature_preserving_denoising.h>
-#include <CGAL/Polygon_mesh_processing/guided_normal_denoising.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
-#include <CGAL/Polygon_mesh_processing/l0_denoising.h>
-#include <CGAL/Polygon_mesh_processing/non_iterative_denoising.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -282,8 +277,6 @@ struct Method_settings
   int debug_empty_mesh = -1; // hidden: the report's mesh of this number loses its vertices (tests the checker)
 };
 
-const char* const classic_methods[] = {"FDC03", "JDD03", "SRML07", "ZFAT11", "HS13", "ZDZ15"};
-
 void add_method_options(po::options_description& options, po::options_description& hidden, Method_settings& m)
 {
   // clang-format off
@@ -300,8 +293,7 @@ void add_method_options(po::options_description& options, po::options_descriptio
 // A usage error for --method / --report, or an empty string.
 std::string check_method_options(const Method_settings& m, const po::variables_map& vm)
 {
-  if(m.method != "intrinsic" &&
-     std::find(std::begin(classic_methods), std::end(classic_methods), m.method) == std::end(classic_methods))
+  if(m.method != "intrinsic" && !denoising_support::find_classic_method<CGAL::Sequential_tag, Mesh>(m.method))
     return "--method must be intrinsic, FDC03, JDD03, SRML07, ZFAT11, HS13 or ZDZ15, not '" + m.method + "'";
   if(m.method != "intrinsic")
     for(const char* name :
@@ -322,18 +314,7 @@ std::string run_classic(Mesh& mesh, const std::string& method)
 {
   try
   {
-    if(method == "FDC03")
-      PMP::bilateral_mesh_denoising<ConcurrencyTag>(mesh);
-    else if(method == "JDD03")
-      PMP::non_iterative_denoising<ConcurrencyTag>(mesh);
-    else if(method == "SRML07")
-      PMP::fast_feature_preserving_denoising<ConcurrencyTag>(mesh);
-    else if(method == "ZFAT11")
-      PMP::bilateral_normal_denoising<ConcurrencyTag>(mesh);
-    else if(method == "HS13")
-      PMP::l0_denoising<ConcurrencyTag>(mesh);
-    else
-      PMP::guided_normal_denoising<ConcurrencyTag>(mesh);
+    denoising_support::find_classic_method<ConcurrencyTag, Mesh>(method)->run(mesh);
   }
   catch(const std::exception& e)
   {

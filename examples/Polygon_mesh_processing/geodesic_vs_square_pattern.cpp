@@ -22,7 +22,7 @@
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
-#include "comparison_report.h"
+#include <denoising_support/comparison_report.h>
 
 #include <chrono>
 #include <cstdio>

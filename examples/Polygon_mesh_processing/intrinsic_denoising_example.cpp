@@ -13,7 +13,7 @@
 // An unreadable, truncated or malformed file, a mesh that is not a triangle
 // mesh or has non-finite coordinates: one line on stderr and exit code 1.
 
-#include "denoise_mesh_file.h"
+#include <denoising_support/mesh_file.h>
 
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>

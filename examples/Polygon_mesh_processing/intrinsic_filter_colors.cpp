@@ -11,7 +11,7 @@
 
 #include <CGAL/Polygon_mesh_processing/intrinsic_filter.h>
 
-#include "../../test/Polygon_mesh_processing/synthetic_meshes.h"
+#include <denoising_support/synthetic_meshes.h>
 
 #include <array>
 #include <cmath>

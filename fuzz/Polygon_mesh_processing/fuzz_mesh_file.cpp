@@ -1,11 +1,11 @@
 // libFuzzer harness: the bytes are a mesh file in the format FUZZ_FORMAT
 // ("off", "obj", "ply" or "stl": one executable each) given to the
-// command-line program's path (examples/Polygon_mesh_processing/denoise_mesh_file.h):
+// command-line program's path (support/include/denoising_support/mesh_file.h):
 // read and validate, then denoise. Documented outcomes only: a one-line
 // message for a bad file, or a denoised mesh with finite coordinates. Anything
 // else (a crash, a sanitizer report, an exception escaping, a NaN) is a bug.
 
-#include "../../examples/Polygon_mesh_processing/denoise_mesh_file.h"
+#include <denoising_support/mesh_file.h>
 
 #include <cmath>
 #include <cstddef>

@@ -11,7 +11,7 @@
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
 
-#include "synthetic_meshes.h"
+#include <denoising_support/synthetic_meshes.h>
 
 #include <gtest/gtest.h>
 

@@ -15,7 +15,7 @@
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
-#include "synthetic_meshes.h"
+#include <denoising_support/synthetic_meshes.h>
 
 #include <gtest/gtest.h>
 

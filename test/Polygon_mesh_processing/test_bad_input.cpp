@@ -15,8 +15,8 @@
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 #include <CGAL/Polygon_mesh_processing/update_vertices_from_face_normals.h>
 
-#include "../../examples/Polygon_mesh_processing/denoise_mesh_file.h"
-#include "synthetic_meshes.h"
+#include <denoising_support/mesh_file.h>
+#include <denoising_support/synthetic_meshes.h>
 
 #include <gtest/gtest.h>
 
@@ -624,7 +624,7 @@ BAD_INPUT_CASE(InvalidParametersThrowAndLeaveEverythingUnchanged)
   return "";
 }
 
-// ---- mesh files (the command-line entry, examples/.../denoise_mesh_file.h) --
+// ---- mesh files (the command-line entry, denoising_support/mesh_file.h) --
 
 namespace {
 

@@ -55,11 +55,6 @@ TEST(BilateralMeshDenoising, NoiseFreeCubeWithAdaptiveSigmaSMeasured)
   EXPECT_LT(e.after, 6.5e-2);
 }
 
-TEST(BilateralMeshDenoising, SurfaceMeshAndPolyhedronGiveTheSameResult)
-{
-  EXPECT_LE(surface_mesh_vs_polyhedron([](auto& m) { PMP::bilateral_mesh_denoising(m); }), 1e-12);
-}
-
 TEST(BilateralMeshDenoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
 {
   Mesh m = denoising_test::cube<Mesh>(3);
@@ -70,19 +65,3 @@ TEST(BilateralMeshDenoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
   PMP::bilateral_mesh_denoising(empty);
   EXPECT_TRUE(empty.is_empty());
 }
-
-TEST(BilateralMeshDenoising, ConstrainedVerticesDoNotMove)
-{
-  constrained_vertices_do_not_move([](Mesh& m, auto pinned) {
-    PMP::bilateral_mesh_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned));
-  });
-}
-
-#ifdef CGAL_LINKED_WITH_TBB
-TEST(BilateralMeshDenoising, ParallelEqualsSequential)
-{
-  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::bilateral_mesh_denoising<CGAL::Sequential_tag>(m); },
-                                   [](Mesh& m) { PMP::bilateral_mesh_denoising<CGAL::Parallel_tag>(m); }),
-            0.);
-}
-#endif

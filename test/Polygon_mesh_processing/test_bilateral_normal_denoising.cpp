@@ -35,11 +35,6 @@ TEST(BilateralNormalDenoising, GeometricNeighborhoodOption)
   EXPECT_LT(e.after, e.before / 10.);
 }
 
-TEST(BilateralNormalDenoising, SurfaceMeshAndPolyhedronGiveTheSameResult)
-{
-  EXPECT_LE(surface_mesh_vs_polyhedron([](auto& m) { PMP::bilateral_normal_denoising(m); }), 1e-12);
-}
-
 TEST(BilateralNormalDenoising, BadSigmaThrowsAndLeavesTheMeshUnchanged)
 {
   Mesh m = denoising_test::cube<Mesh>(3);
@@ -50,22 +45,6 @@ TEST(BilateralNormalDenoising, BadSigmaThrowsAndLeavesTheMeshUnchanged)
                std::invalid_argument);
   EXPECT_EQ(max_distance(before, positions(m)), 0.);
 }
-
-TEST(BilateralNormalDenoising, ConstrainedVerticesDoNotMove)
-{
-  constrained_vertices_do_not_move([](Mesh& m, auto pinned) {
-    PMP::bilateral_normal_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned));
-  });
-}
-
-#ifdef CGAL_LINKED_WITH_TBB
-TEST(BilateralNormalDenoising, ParallelEqualsSequential)
-{
-  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::bilateral_normal_denoising<CGAL::Sequential_tag>(m); },
-                                   [](Mesh& m) { PMP::bilateral_normal_denoising<CGAL::Parallel_tag>(m); }),
-            0.);
-}
-#endif
 
 TEST(BilateralNormalDenoising, FaceNormalMapReceivesUnitFilteredNormals)
 {

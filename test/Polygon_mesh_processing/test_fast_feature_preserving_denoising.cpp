@@ -32,11 +32,6 @@ TEST(FastFeaturePreservingDenoising, EdgeNeighborhoodAlsoSmooths)
   EXPECT_LT(e.after, e.before / 5.);
 }
 
-TEST(FastFeaturePreservingDenoising, SurfaceMeshAndPolyhedronGiveTheSameResult)
-{
-  EXPECT_LE(surface_mesh_vs_polyhedron([](auto& m) { PMP::fast_feature_preserving_denoising(m); }), 1e-12);
-}
-
 TEST(FastFeaturePreservingDenoising, BadThresholdThrowsAndLeavesTheMeshUnchanged)
 {
   Mesh m = denoising_test::cube<Mesh>(3);
@@ -50,22 +45,6 @@ TEST(FastFeaturePreservingDenoising, BadThresholdThrowsAndLeavesTheMeshUnchanged
   PMP::fast_feature_preserving_denoising(empty);
   EXPECT_TRUE(empty.is_empty());
 }
-
-TEST(FastFeaturePreservingDenoising, ConstrainedVerticesDoNotMove)
-{
-  constrained_vertices_do_not_move([](Mesh& m, auto pinned) {
-    PMP::fast_feature_preserving_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned));
-  });
-}
-
-#ifdef CGAL_LINKED_WITH_TBB
-TEST(FastFeaturePreservingDenoising, ParallelEqualsSequential)
-{
-  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::fast_feature_preserving_denoising<CGAL::Sequential_tag>(m); },
-                                   [](Mesh& m) { PMP::fast_feature_preserving_denoising<CGAL::Parallel_tag>(m); }),
-            0.);
-}
-#endif
 
 TEST(FastFeaturePreservingDenoising, FaceNormalMapReceivesUnitFilteredNormals)
 {

@@ -11,7 +11,7 @@
 #include <CGAL/Polygon_mesh_processing/update_vertices_from_face_normals.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
-#include "synthetic_meshes.h"
+#include <denoising_support/synthetic_meshes.h>
 
 #include <gtest/gtest.h>
 

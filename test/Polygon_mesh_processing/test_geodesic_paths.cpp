@@ -9,7 +9,7 @@
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 
-#include "synthetic_meshes.h"
+#include <denoising_support/synthetic_meshes.h>
 
 #include <gtest/gtest.h>
 

@@ -102,11 +102,6 @@ TEST(GuidedNormalDenoising, GuidanceOfACubeIsTheFaceNormalAwayFromCorners)
   EXPECT_LE(wrong, 8u * 6u); // at most a few faces per corner
 }
 
-TEST(GuidedNormalDenoising, SurfaceMeshAndPolyhedronGiveTheSameResult)
-{
-  EXPECT_LE(surface_mesh_vs_polyhedron([](auto& m) { PMP::guided_normal_denoising(m); }), 1e-12);
-}
-
 TEST(GuidedNormalDenoising, BadRadiusThrowsAndLeavesTheMeshUnchanged)
 {
   Mesh m = denoising_test::cube<Mesh>(3);
@@ -115,22 +110,6 @@ TEST(GuidedNormalDenoising, BadRadiusThrowsAndLeavesTheMeshUnchanged)
   EXPECT_THROW(PMP::guided_normal_denoising(m, CGAL::parameters::sigma_range(0.)), std::invalid_argument);
   EXPECT_EQ(max_distance(before, positions(m)), 0.);
 }
-
-TEST(GuidedNormalDenoising, ConstrainedVerticesDoNotMove)
-{
-  constrained_vertices_do_not_move([](Mesh& m, auto pinned) {
-    PMP::guided_normal_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned));
-  });
-}
-
-#ifdef CGAL_LINKED_WITH_TBB
-TEST(GuidedNormalDenoising, ParallelEqualsSequential)
-{
-  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::guided_normal_denoising<CGAL::Sequential_tag>(m); },
-                                   [](Mesh& m) { PMP::guided_normal_denoising<CGAL::Parallel_tag>(m); }),
-            0.);
-}
-#endif
 
 // The filtered normals are unit vectors and, except at the corners (where the
 // guidance is ambiguous, see above; measured: 6 faces of 432), close to an axis.

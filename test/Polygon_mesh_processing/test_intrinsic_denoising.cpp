@@ -11,7 +11,7 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
-#include "synthetic_meshes.h"
+#include <denoising_support/synthetic_meshes.h>
 
 #include <gtest/gtest.h>
 

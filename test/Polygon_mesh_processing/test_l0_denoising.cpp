@@ -52,11 +52,6 @@ TEST(L0Denoising, EdgeOperatorVanishesOnCoplanarTriangles)
   EXPECT_GT(std::abs(value[2]), 0.1);
 }
 
-TEST(L0Denoising, SurfaceMeshAndPolyhedronGiveTheSameResult)
-{
-  EXPECT_LE(surface_mesh_vs_polyhedron([](auto& m) { PMP::l0_denoising(m); }), 1e-12);
-}
-
 TEST(L0Denoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
 {
   Mesh m = denoising_test::cube<Mesh>(3);
@@ -66,14 +61,6 @@ TEST(L0Denoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
   Mesh empty;
   PMP::l0_denoising(empty);
   EXPECT_TRUE(empty.is_empty());
-}
-
-// (no Parallel_tag test: the solver is sequential and the tag unused)
-
-TEST(L0Denoising, ConstrainedVerticesDoNotMove)
-{
-  constrained_vertices_do_not_move(
-      [](Mesh& m, auto pinned) { PMP::l0_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned)); });
 }
 
 // A solver that counts its factorisations, and one whose factorisation fails.

@@ -35,11 +35,6 @@ TEST(NonIterativeDenoising, NoiseFreeCubeWithDefaultsMeasured)
   EXPECT_LT(e.after, 1.7e-2);
 }
 
-TEST(NonIterativeDenoising, SurfaceMeshAndPolyhedronGiveTheSameResult)
-{
-  EXPECT_LE(surface_mesh_vs_polyhedron([](auto& m) { PMP::non_iterative_denoising(m); }), 1e-12);
-}
-
 TEST(NonIterativeDenoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
 {
   Mesh m = denoising_test::cube<Mesh>(3);
@@ -50,19 +45,3 @@ TEST(NonIterativeDenoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
   PMP::non_iterative_denoising(empty);
   EXPECT_TRUE(empty.is_empty());
 }
-
-TEST(NonIterativeDenoising, ConstrainedVerticesDoNotMove)
-{
-  constrained_vertices_do_not_move([](Mesh& m, auto pinned) {
-    PMP::non_iterative_denoising(m, CGAL::parameters::vertex_is_constrained_map(pinned));
-  });
-}
-
-#ifdef CGAL_LINKED_WITH_TBB
-TEST(NonIterativeDenoising, ParallelEqualsSequential)
-{
-  EXPECT_EQ(parallel_vs_sequential([](Mesh& m) { PMP::non_iterative_denoising<CGAL::Sequential_tag>(m); },
-                                   [](Mesh& m) { PMP::non_iterative_denoising<CGAL::Parallel_tag>(m); }),
-            0.);
-}
-#endif

@@ -9,7 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "synthetic_meshes.h"
+#include "flat_setup.h"
+#include <denoising_support/synthetic_meshes.h>
 
 #include <algorithm>
 #include <array>
@@ -22,70 +23,6 @@
 namespace D = CGAL::Polygon_mesh_processing::internal::Denoising;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
-
-// A mesh as the denoiser sees it before the paths: its flat copy, the face
-// data and the paper's radius r = 4d.
-template <typename Tag = CGAL::Sequential_tag>
-struct Flat_setup
-{
-  D::Flat_mesh m;
-  D::Face_data fd;
-  double r = 0.;
-  explicit Flat_setup(const Mesh& mesh)
-      : m(D::make_flat_mesh(mesh, get(CGAL::vertex_point, mesh), get(CGAL::vertex_index, mesh),
-                            get(CGAL::face_index, mesh), "test"))
-  {
-    D::compute_face_data<Tag>(m, m.points, fd);
-    r = 4. * D::mean_adjacent_centroid_distance(m, fd);
-  }
-};
-
-// The mean distance d between adjacent centroids and the mean edge length
-// are the same, bitwise, with Parallel_tag (values computed in parallel,
-// added in order) as with Sequential_tag: on noisy fandisk, and on a grid
-// with four fins on one edge, whose faces there have more values than the
-// parallel version keeps per face (it must fall back to the sequential sum).
-TEST(FaceData, MeansAreTheSameWithEveryConcurrencyTag)
-{
-  Mesh fandisk;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
-  CGAL::Polygon_mesh_processing::add_gaussian_noise(fandisk, 0.3, CGAL::parameters::random_seed(3));
-  const Flat_setup<> noisy(fandisk);
-  Flat_setup<> fins(denoising_test::plane_grid<Mesh>(48)); // 4608 faces
-  {
-    D::Flat_mesh& m = fins.m;
-    const std::array<std::uint32_t, 3> t = m.triangles[0];
-    for(int k = 0; k < 4; ++k) // fins on the edge (t[0], t[1]) of face 0
-    {
-      m.points.push_back({0.01 * k, 0.02, 0.1 + 0.1 * k});
-      m.triangles.push_back({t[0], t[1], std::uint32_t(m.points.size() - 1)});
-    }
-    m.vertex_face_offsets.assign(m.points.size() + 1, 0);
-    for(const auto& u : m.triangles)
-      for(std::uint32_t v : u)
-        ++m.vertex_face_offsets[v + 1];
-    for(std::size_t v = 0; v < m.points.size(); ++v)
-      m.vertex_face_offsets[v + 1] += m.vertex_face_offsets[v];
-    m.vertex_faces.assign(m.vertex_face_offsets.back(), 0);
-    std::vector<std::uint32_t> fill(m.vertex_face_offsets.begin(), m.vertex_face_offsets.end() - 1);
-    for(std::size_t f = 0; f < m.triangles.size(); ++f)
-      for(std::uint32_t v : m.triangles[f])
-        m.vertex_faces[fill[v]++] = std::uint32_t(f);
-    D::compute_face_data<CGAL::Sequential_tag>(m, m.points, fins.fd);
-  }
-  for(const Flat_setup<>* s : {&noisy, static_cast<const Flat_setup<>*>(&fins)})
-  {
-    ASSERT_GT(s->m.number_of_faces(), 4096u); // the parallel version's size
-    const double d = D::mean_adjacent_centroid_distance<CGAL::Sequential_tag>(s->m, s->fd);
-    const double l = D::mean_edge_length<CGAL::Sequential_tag>(s->m);
-    EXPECT_GT(d, 0.);
-    EXPECT_GT(l, 0.);
-#ifdef CGAL_LINKED_WITH_TBB
-    EXPECT_EQ(D::mean_adjacent_centroid_distance<CGAL::Parallel_tag>(s->m, s->fd), d);
-    EXPECT_EQ(D::mean_edge_length<CGAL::Parallel_tag>(s->m), l);
-#endif
-  }
-}
 
 TEST(SquarePattern, ParentRanksFollowThePaper)
 {
@@ -402,84 +339,6 @@ TEST(SquarePattern, RenumberedFacesGiveTheSameTreesAndNormals)
   expect_renumbering_changes_nothing<CGAL::Sequential_tag>(denoising_test::cube<Mesh>(12));
 #ifdef CGAL_LINKED_WITH_TBB
   expect_renumbering_changes_nothing<CGAL::Parallel_tag>(fandisk);
-#endif
-}
-
-// The vector kernels of the paper's case (n = m = 1: SSE2, and AVX2 where
-// the processor has it) give bitwise the filtered normals of the generic
-// engine, with and without the self term; and their two- and four-lane exps
-// are bitwise the scalar one, down to the flush to 0.
-TEST(FilterPass, VectorKernelEqualsGenericEngine)
-{
-  Mesh fandisk;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
-  CGAL::Polygon_mesh_processing::add_gaussian_noise(fandisk, 0.3, CGAL::parameters::random_seed(5));
-  const Flat_setup<> setup(fandisk);
-  const D::Face_data& fd = setup.fd;
-  const D::Path_forest forest = D::square_pattern_paths_within<CGAL::Sequential_tag>(setup.m, fd, setup.r);
-  for(bool self : {false, true})
-    for(double sigma : {0.2, 0.4, 1.3})
-    {
-      D::Intrinsic_kernel kernel;
-      kernel.include_self = self;
-      kernel.sigma_spatial = sigma;
-      kernel.sigma_range = 0.5 * sigma;
-      std::vector<D::Vec3> fast, generic;
-      D::intrinsic_filter_pass<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel, fast);
-      D::intrinsic_filter_pass_generic<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel, generic);
-      // each vector kernel on its own, whichever the dispatch picks
-      std::vector<std::pair<const char*, std::vector<D::Vec3>>> kernels;
-      kernels.emplace_back("dispatched", fast);
-#ifdef CGAL_PMP_DENOISING_SSE2
-      kernels.emplace_back("SSE2", std::vector<D::Vec3>(forest.number_of_faces()));
-      D::intrinsic_filter_pass_l1_sse2<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel,
-                                                             kernels.back().second);
-#endif
-#ifdef CGAL_PMP_DENOISING_AVX2
-      if(D::cpu_has_avx2())
-      {
-        kernels.emplace_back("AVX2", std::vector<D::Vec3>(forest.number_of_faces()));
-        D::intrinsic_filter_pass_l1_avx2<CGAL::Sequential_tag>(forest, fd.normals, fd.areas, kernel,
-                                                               kernels.back().second);
-      }
-#endif
-      for(const auto& k : kernels)
-      {
-        ASSERT_EQ(k.second.size(), generic.size());
-        std::size_t different = 0;
-        for(std::size_t f = 0; f < generic.size(); ++f)
-          different += k.second[f] != generic[f] ? 1 : 0;
-        EXPECT_EQ(different, 0u) << k.first << " self " << self << " sigma " << sigma;
-      }
-    }
-#ifdef CGAL_PMP_DENOISING_SSE2
-  const D::Exp_table& table = D::Exp_table::instance();
-  std::size_t different = 0, tried = 0;
-  for(double x = -720.; x <= 0.; x += 0.0137)
-    for(double y : {x, x - 1e-9, -0., std::nextafter(-707., 0.), -707., -1e300})
-    {
-      double lanes[2];
-      _mm_storeu_pd(lanes, D::exp_nonpositive_2(_mm_set_pd(x, y), table));
-      different += (lanes[0] != D::exp_nonpositive(y, table)) + (lanes[1] != D::exp_nonpositive(x, table));
-      tried += 2;
-    }
-  EXPECT_EQ(different, 0u) << "of " << tried;
-#endif
-#ifdef CGAL_PMP_DENOISING_AVX2
-  if(D::cpu_has_avx2())
-  {
-    std::size_t different4 = 0, tried4 = 0;
-    for(double x = -720.; x <= 0.; x += 0.0137)
-    {
-      const double in[4] = {x, x - 1e-9, std::nextafter(-707., 0.), x < -360. ? -1e300 : -0.};
-      double lanes[4];
-      D::exp_nonpositive_4(in, lanes, table);
-      for(int l = 0; l < 4; ++l)
-        different4 += lanes[l] != D::exp_nonpositive(in[l], table);
-      tried4 += 4;
-    }
-    EXPECT_EQ(different4, 0u) << "of " << tried4;
-  }
 #endif
 }
 

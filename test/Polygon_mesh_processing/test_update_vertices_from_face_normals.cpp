@@ -10,7 +10,7 @@
 #include <CGAL/Polygon_mesh_processing/guided_normal_denoising.h>
 #include <CGAL/Polygon_mesh_processing/update_vertices_from_face_normals.h>
 
-#include "synthetic_meshes.h"
+#include <denoising_support/synthetic_meshes.h>
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // shaded with three.js, all canvases sharing one orbit camera, an optional
 // per-face normal-error heat map, and the table of E_n / E_v / seconds.
 //
-// Inlined by examples/Polygon_mesh_processing/comparison_report.h into every
+// Inlined by support/include/denoising_support/comparison_report.h into every
 // report (together with three's module build) and used by render.mjs for the
 // figures. Page data (JSON, element #report-data):
 //   { title, heatMax (degrees), view: {dir: [x,y,z], up: [x,y,z]},

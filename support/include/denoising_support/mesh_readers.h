@@ -1,5 +1,5 @@
 // Bounded readers of OBJ, PLY (ASCII and binary) and STL (ASCII and binary)
-// data for the command-line program (denoise_mesh_file.h). Each reads the
+// data for the command-line program (mesh_file.h). Each reads the
 // whole input (its size is known), parses it into a polygon soup and reports
 // failure as a one-line message naming the line, element or facet at fault:
 // every count is bounded by the data's size before anything is allocated from

@@ -11,7 +11,7 @@
 
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 
-#include "denoise_mesh_readers.h"
+#include <denoising_support/mesh_readers.h>
 
 #include <CGAL/IO/OFF/File_scanner_OFF.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>

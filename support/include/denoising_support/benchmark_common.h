@@ -1,0 +1,40 @@
+// Copyright (c) 2026 The intrinsic denoising package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// What the benchmarks share: reading a triangle mesh of CGAL's data set and
+// timing with a wall-clock stopwatch.
+
+#ifndef DENOISING_SUPPORT_BENCHMARK_COMMON_H
+#define DENOISING_SUPPORT_BENCHMARK_COMMON_H
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <chrono>
+#include <string>
+
+namespace denoising_support {
+
+// Reads `path` into `mesh`; false unless it is read and is a non-empty
+// triangle mesh.
+template <typename Mesh>
+bool read_triangle_mesh(const std::string& path, Mesh& mesh)
+{
+  return CGAL::IO::read_polygon_mesh(path, mesh) && !CGAL::is_empty(mesh) && CGAL::is_triangle_mesh(mesh);
+}
+
+// Wall-clock seconds since construction or the last restart().
+class Stopwatch
+{
+public:
+  Stopwatch() : start_(std::chrono::steady_clock::now()) {}
+  void restart() { start_ = std::chrono::steady_clock::now(); }
+  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+private:
+  std::chrono::steady_clock::time_point start_;
+};
+
+} // namespace denoising_support
+
+#endif
