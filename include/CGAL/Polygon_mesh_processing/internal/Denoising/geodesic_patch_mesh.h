@@ -17,6 +17,7 @@
 
 #include <boost/optional.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -125,6 +126,38 @@ inline double corner_angle_degrees(const Vec3& p, const Vec3& q, const Vec3& r)
   double cosine = (u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / product;
   cosine = (std::min)(1., (std::max)(-1., cosine));
   return std::acos(cosine) * 180. / CGAL_PI;
+}
+
+// Squared distance from p to the triangle (a, b, c) (closest point by the
+// Voronoi regions of the vertices, edges and interior).
+inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if(d1 <= 0. && d2 <= 0.)
+    return squared_norm(ap);
+  const Vec3 bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if(d3 >= 0. && d4 <= d3)
+    return squared_norm(bp);
+  const double vc = d1 * d4 - d3 * d2;
+  if(vc <= 0. && d1 >= 0. && d3 <= 0.)
+    return squared_norm(ap - (d1 / (d1 - d3)) * ab);
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if(d6 >= 0. && d5 <= d6)
+    return squared_norm(cp);
+  const double vb = d5 * d2 - d1 * d6;
+  if(vb <= 0. && d2 >= 0. && d6 <= 0.)
+    return squared_norm(ap - (d2 / (d2 - d6)) * ac);
+  const double va = d3 * d6 - d5 * d4;
+  if(va <= 0. && (d4 - d3) >= 0. && (d5 - d6) >= 0.)
+    return squared_norm(bp - ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b));
+  const double denom = va + vb + vc;
+  if(!(denom > 0.)) // degenerate triangle: nearest of its vertices
+    return (std::min)({squared_norm(ap), squared_norm(bp), squared_norm(cp)});
+  const double v = vb / denom, w = vc / denom;
+  return squared_norm(ap - v * ab - w * ac);
 }
 
 } // namespace Denoising

@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Geodesics from the centroid of a face to the centroids of its neighbours
-// on a small patch copy of the mesh (Geodesic_patch_solver), with the path
-// record they give and the counts the path builder reports.
+// on a small patch copy of the mesh (Geodesic_patch_solver): the patch's
+// faces are selected, copied into a Geodesic_patch_mesh, and CGAL's
+// Surface_mesh_shortest_path answers the queries.
 
 #ifndef CGAL_PMP_INTERNAL_DENOISING_GEODESIC_PATCH_SOLVER_H
 #define CGAL_PMP_INTERNAL_DENOISING_GEODESIC_PATCH_SOLVER_H
@@ -11,6 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/face_data.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/geodesic_patch_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/geodesic_path.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vec3.h>
 
 #include <CGAL/Surface_mesh_shortest_path.h>
@@ -29,114 +31,6 @@ namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
 namespace Denoising {
-
-// Counts of what happened while building the paths (for tests and reports).
-struct Geodesic_path_statistics
-{
-  std::size_t paths = 0;           // neighbour paths built (one per neighbour)
-  std::size_t fallbacks = 0;       // of which direct i -> j (no geodesic found in the patch)
-  std::size_t vertex_passages = 0; // geodesics through a vertex of the patch (pseudo-sources)
-  std::size_t failed_patches = 0;  // faces whose patch could not be built (all paths direct)
-  // With Geodesic_path_options::time_phases, seconds (summed over threads)
-  // spent copying the patches, and inside CGAL's Surface_mesh_shortest_path:
-  // building the sequence trees (build_sequence_tree()), freeing them
-  // (clear()) and answering the queries
-  // (shortest_path_sequence_to_source_points(), with the visitor that records
-  // the crossed edges). Zero otherwise.
-  double patch_seconds = 0., tree_seconds = 0., clear_seconds = 0., query_seconds = 0.;
-
-  void add(const Geodesic_path_statistics& o)
-  {
-    paths += o.paths;
-    fallbacks += o.fallbacks;
-    vertex_passages += o.vertex_passages;
-    failed_patches += o.failed_patches;
-    patch_seconds += o.patch_seconds;
-    tree_seconds += o.tree_seconds;
-    clear_seconds += o.clear_seconds;
-    query_seconds += o.query_seconds;
-  }
-};
-
-// One geodesic path from c_i to c_j, in order from i to j.
-// - faces: the faces whose interior the geodesic crosses (over a length
-//   above a relative 1e-9 of the whole path), starting with i, ending with j;
-//   consecutive faces are different.
-// - lengths: for each face, the length of the geodesic inside it.
-// - points: the polyline c_i, the points where it crosses an edge or passes
-//   through a vertex (each point once), c_j (empty if the solver does not
-//   collect them, see Geodesic_patch_solver::set_collect_points()).
-struct Geodesic_path
-{
-  std::vector<std::uint32_t> faces;
-  std::vector<double> lengths;
-  std::vector<Vec3> points;
-  std::size_t vertex_passages = 0;
-  double length() const
-  {
-    double s = 0.;
-    for(double l : lengths)
-      s += l;
-    return s;
-  }
-};
-
-// Squared distance from p to the triangle (a, b, c) (closest point by the
-// Voronoi regions of the vertices, edges and interior).
-inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
-{
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-  if(d1 <= 0. && d2 <= 0.)
-    return squared_norm(ap);
-  const Vec3 bp = p - b;
-  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-  if(d3 >= 0. && d4 <= d3)
-    return squared_norm(bp);
-  const double vc = d1 * d4 - d3 * d2;
-  if(vc <= 0. && d1 >= 0. && d3 <= 0.)
-    return squared_norm(ap - (d1 / (d1 - d3)) * ab);
-  const Vec3 cp = p - c;
-  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-  if(d6 >= 0. && d5 <= d6)
-    return squared_norm(cp);
-  const double vb = d5 * d2 - d1 * d6;
-  if(vb <= 0. && d2 >= 0. && d6 <= 0.)
-    return squared_norm(ap - (d2 / (d2 - d6)) * ac);
-  const double va = d3 * d6 - d5 * d4;
-  if(va <= 0. && (d4 - d3) >= 0. && (d5 - d6) >= 0.)
-    return squared_norm(bp - ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b));
-  const double denom = va + vb + vc;
-  if(!(denom > 0.)) // degenerate triangle: nearest of its vertices
-    return (std::min)({squared_norm(ap), squared_norm(bp), squared_norm(cp)});
-  const double v = vb / denom, w = vc / denom;
-  return squared_norm(ap - v * ab - w * ac);
-}
-
-// A stopwatch for Geodesic_path_options::time_phases: add_to(field) adds the
-// seconds since the last add_to() (or construction) to that field of
-// `statistics` and restarts; with no statistics it reads no clock.
-class Phase_clock
-{
-public:
-  explicit Phase_clock(Geodesic_path_statistics* statistics) : statistics_(statistics)
-  {
-    if(statistics_)
-      last_ = std::chrono::steady_clock::now();
-  }
-  void add_to(double Geodesic_path_statistics::*field)
-  {
-    if(!statistics_)
-      return;
-    const auto now = std::chrono::steady_clock::now();
-    statistics_->*field += std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-  }
-
-private:
-  Geodesic_path_statistics* statistics_;
-  std::chrono::steady_clock::time_point last_;
-};
 
 // Geodesics from the centroid of one face to the centroids of its neighbours,
 // inside a patch of the mesh. Holds the scratch memory of one thread: make one
@@ -169,18 +63,7 @@ class Geodesic_patch_solver
   typedef Patch::Face_index face_descriptor;
   typedef Traits::Barycentric_coordinates Barycentric_coordinates;
 
-  // One event of CGAL's path sequence (visited from the query back to the source).
-  struct Event
-  {
-    enum Kind
-    {
-      FACE,
-      EDGE,
-      VERTEX
-    } kind;
-    std::uint32_t near_face, far_face; // EDGE: faces on the source side and on the query side
-    Vec3 point;
-  };
+  typedef Geodesic_event Event;
 
   struct Visitor
   {
@@ -255,60 +138,12 @@ public:
     clock.add_to(&Geodesic_path_statistics::clear_seconds);
     patch_.resize(0, 0, 0);
     global_.clear();
-    ++stamp_;
-    if(stamp_ == no_face) // wrapped around: reset the stamps
-    {
-      std::fill(face_stamp_.begin(), face_stamp_.end(), no_face);
-      std::fill(vertex_stamp_.begin(), vertex_stamp_.end(), no_face);
-      std::fill(tested_stamp_.begin(), tested_stamp_.end(), no_face);
-      std::fill(bridge_stamp_.begin(), bridge_stamp_.end(), no_face);
-      stamp_ = 0;
-    }
+    next_stamp();
     if(is_degenerate(i))
       return false;
-    select(i);
-    const Vec3& ci = fd_.centroids[i];
-    double reach2 = 0.; // squared distance to the farthest neighbour centroid
-    for(NeighborIterator it = nb; it != ne; ++it)
-    {
-      select(*it);
-      reach2 = (std::max)(reach2, squared_norm(fd_.centroids[*it] - ci));
-    }
-    // where selected faces meet at a vertex only (the neighbourhood grows
-    // through shared vertices), the faces around that vertex are added, so
-    // that the patch is connected through edges wherever the neighbourhood is
-    const std::size_t selected = global_.size();
-    for(std::size_t k = 0; k < selected; ++k)
-      for(std::uint32_t v : m_.triangles[global_[k]])
-      {
-        if(bridge_stamp_[v] == stamp_)
-          continue;
-        bridge_stamp_[v] = stamp_;
-        if(selected_fans(v) > 1)
-          for(std::uint32_t q = m_.vertex_face_offsets[v]; q < m_.vertex_face_offsets[v + 1]; ++q)
-            select(m_.vertex_faces[q]);
-      }
-    // rings: faces sharing a vertex with the patch that come within that
-    // distance of c_i (any face a straight segment from c_i to a neighbour's
-    // centroid crosses does)
-    std::size_t ring_begin = 0;
-    for(unsigned int r = 0; r < rings_; ++r)
-    {
-      const std::size_t ring_end = global_.size();
-      for(std::size_t k = ring_begin; k < ring_end; ++k)
-        for(std::uint32_t v : m_.triangles[global_[k]])
-          for(std::uint32_t q = m_.vertex_face_offsets[v]; q < m_.vertex_face_offsets[v + 1]; ++q)
-          {
-            const std::uint32_t g = m_.vertex_faces[q];
-            if(tested_stamp_[g] == stamp_)
-              continue;
-            tested_stamp_[g] = stamp_;
-            const auto& t = m_.triangles[g];
-            if(squared_distance_to_triangle(ci, m_.points[t[0]], m_.points[t[1]], m_.points[t[2]]) <= reach2)
-              select(g);
-          }
-      ring_begin = ring_end;
-    }
+    const double reach2 = select_neighborhood(i, nb, ne);
+    bridge_vertex_contacts();
+    add_rings(fd_.centroids[i], reach2);
     const bool built = build_patch();
     clock.add_to(&Geodesic_path_statistics::patch_seconds);
     if(!built)
@@ -376,7 +211,7 @@ public:
     // one comes from a numerical failure
     if(distance < (1. - 1e-9) * norm(fd_.centroids[j] - fd_.centroids[source_]))
       return false;
-    return trace(j, out);
+    return trace_geodesic_path(events_, source_, j, points_, portions_, out);
   }
 
 private:
@@ -396,6 +231,80 @@ private:
     face_stamp_[f] = stamp_;
     face_local_[f] = std::uint32_t(global_.size());
     global_.push_back(f);
+  }
+
+  // A new stamp for the face about to be set up (all stamps reset when the
+  // counter wraps around).
+  void next_stamp()
+  {
+    ++stamp_;
+    if(stamp_ == no_face)
+    {
+      std::fill(face_stamp_.begin(), face_stamp_.end(), no_face);
+      std::fill(vertex_stamp_.begin(), vertex_stamp_.end(), no_face);
+      std::fill(tested_stamp_.begin(), tested_stamp_.end(), no_face);
+      std::fill(bridge_stamp_.begin(), bridge_stamp_.end(), no_face);
+      stamp_ = 0;
+    }
+  }
+
+  // Selects face i and its neighbours; returns the squared distance from c_i
+  // to the farthest neighbour centroid.
+  template <typename NeighborIterator>
+  double select_neighborhood(std::uint32_t i, NeighborIterator nb, NeighborIterator ne)
+  {
+    select(i);
+    const Vec3& ci = fd_.centroids[i];
+    double reach2 = 0.;
+    for(NeighborIterator it = nb; it != ne; ++it)
+    {
+      select(*it);
+      reach2 = (std::max)(reach2, squared_norm(fd_.centroids[*it] - ci));
+    }
+    return reach2;
+  }
+
+  // Where selected faces meet at a vertex only (the neighbourhood grows
+  // through shared vertices), selects the faces around that vertex, so that
+  // the patch is connected through edges wherever the neighbourhood is.
+  void bridge_vertex_contacts()
+  {
+    const std::size_t selected = global_.size();
+    for(std::size_t k = 0; k < selected; ++k)
+      for(std::uint32_t v : m_.triangles[global_[k]])
+      {
+        if(bridge_stamp_[v] == stamp_)
+          continue;
+        bridge_stamp_[v] = stamp_;
+        if(selected_fans(v) > 1)
+          for(std::uint32_t q = m_.vertex_face_offsets[v]; q < m_.vertex_face_offsets[v + 1]; ++q)
+            select(m_.vertex_faces[q]);
+      }
+  }
+
+  // The rings: faces sharing a vertex with the patch that come within
+  // sqrt(reach2) of ci (any face a straight segment from c_i to a
+  // neighbour's centroid crosses does), `rings_` times.
+  void add_rings(const Vec3& ci, double reach2)
+  {
+    std::size_t ring_begin = 0;
+    for(unsigned int r = 0; r < rings_; ++r)
+    {
+      const std::size_t ring_end = global_.size();
+      for(std::size_t k = ring_begin; k < ring_end; ++k)
+        for(std::uint32_t v : m_.triangles[global_[k]])
+          for(std::uint32_t q = m_.vertex_face_offsets[v]; q < m_.vertex_face_offsets[v + 1]; ++q)
+          {
+            const std::uint32_t g = m_.vertex_faces[q];
+            if(tested_stamp_[g] == stamp_)
+              continue;
+            tested_stamp_[g] = stamp_;
+            const auto& t = m_.triangles[g];
+            if(squared_distance_to_triangle(ci, m_.points[t[0]], m_.points[t[1]], m_.points[t[2]]) <= reach2)
+              select(g);
+          }
+      ring_begin = ring_end;
+    }
   }
 
   // Groups the selected faces around v (in fan_faces_) into fans of faces
@@ -460,6 +369,31 @@ private:
   // fails and its paths are direct).
   bool build_patch()
   {
+    copy_vertices();
+    const std::size_t nv = vertex_points_.size(), nf = global_.size();
+    // the elements are made by one resize of patch_'s arrays (in the memory
+    // of the previous patch), with room for 3 nf edges, cut down to the
+    // edges made at the end
+    patch_.resize(0, 0, 0);
+    patch_.resize(nv, 3 * nf, nf);
+    for(std::size_t v = 0; v < nv; ++v)
+      patch_.point(vertex_descriptor(std::uint32_t(v))) =
+          Kernel::Point_3(vertex_points_[v][0], vertex_points_[v][1], vertex_points_[v][2]);
+    std::size_t ne = 0;
+    if(!link_faces(ne))
+      return false;
+    patch_.resize(nv, ne, nf);
+    if(!link_border())
+      return false;
+    flag_pseudo_sources();
+    return true;
+  }
+
+  // The patch vertices: one copy of each mesh vertex per fan of selected
+  // faces around it (`vertex_points_`), the patch vertex of each local face
+  // corner (`corner_`) and the angle sum at each patch vertex.
+  void copy_vertices()
+  {
     const std::size_t nf = global_.size();
     corner_.assign(3 * nf, 0);
     angle_sum_.clear();
@@ -491,19 +425,17 @@ private:
           angle_sum_[std::size_t(fan_vertex_[r])] += corner_degrees_[3 * g + cg];
         }
       }
-    // the elements are made by one resize of patch_'s arrays (in the memory
-    // of the previous patch), with room for 3 nf edges, cut down to the
-    // edges made at the end
-    const std::size_t nv = vertex_points_.size();
-    patch_.resize(0, 0, 0);
-    patch_.resize(nv, 3 * nf, nf);
-    for(std::size_t v = 0; v < nv; ++v)
-      patch_.point(vertex_descriptor(std::uint32_t(v))) =
-          Kernel::Point_3(vertex_points_[v][0], vertex_points_[v][1], vertex_points_[v][2]);
-    // halfedges: out_first_[v] / out_next_[h] list the halfedges leaving v
+  }
+
+  // The faces' halfedges, an edge made at the first of its two faces
+  // (`ne` counts them); out_first_[v] / out_next_[h] list the halfedges
+  // leaving v. False if a face has two equal corners or an edge two faces on
+  // one side.
+  bool link_faces(std::size_t& ne)
+  {
+    const std::size_t nv = vertex_points_.size(), nf = global_.size();
     out_first_.assign(nv, no_face);
     out_next_.assign(6 * nf, no_face);
-    std::size_t ne = 0;
     const halfedge_descriptor null_h = Patch::null_halfedge();
     for(std::size_t k = 0; k < nf; ++k)
     {
@@ -544,10 +476,15 @@ private:
       }
       patch_.set_halfedge(f, h[2]); // as Euler::add_face: the halfedge into the first corner
     }
-    patch_.resize(nv, ne, nf);
-    // border halfedges: the next one leaves the vertex this one enters; a
-    // border vertex refers to its incoming border halfedge
-    border_out_.assign(nv, no_face);
+    return true;
+  }
+
+  // Border halfedges: the next one leaves the vertex this one enters; a
+  // border vertex refers to its incoming border halfedge. False if a vertex
+  // has two border gaps.
+  bool link_border()
+  {
+    border_out_.assign(vertex_points_.size(), no_face);
     const std::size_t nh = patch_.number_of_halfedges();
     for(std::size_t e = 0; e < nh; ++e)
       if(patch_.face(halfedge_descriptor(e)) == Patch::null_face())
@@ -564,8 +501,14 @@ private:
         patch_.set_next(halfedge_descriptor(e), halfedge_descriptor(border_out_[std::size_t(v)]));
         patch_.set_halfedge(v, halfedge_descriptor(e));
       }
-    // pseudo-sources (see Geodesic_patch_mesh): saddles as CGAL tests them,
-    // border vertices where the interior angle is not below pi
+    return true;
+  }
+
+  // Pseudo-sources (see Geodesic_patch_mesh): saddles as CGAL tests them,
+  // border vertices where the interior angle is not below pi.
+  void flag_pseudo_sources()
+  {
+    const std::size_t nv = vertex_points_.size();
     patch_.border.assign(nv, 0);
     patch_.pseudo_source.assign(nv, 0);
     const double saddle_bound = (1. - 100. * std::numeric_limits<double>::epsilon()) * 2 * CGAL_PI;
@@ -575,7 +518,6 @@ private:
       patch_.border[v] = border_out_[v] != no_face;
       patch_.pseudo_source[v] = patch_.border[v] ? angle >= (1. - 1e-9) * CGAL_PI : angle >= saddle_bound;
     }
-    return true;
   }
 
   bool share_edge_at(std::uint32_t f, std::uint32_t g, std::uint32_t v) const
@@ -586,112 +528,6 @@ private:
       if(x != v && (b[0] == x || b[1] == x || b[2] == x))
         return true;
     return false;
-  }
-
-  // Turns the events (from c_j back to c_i) into faces crossed, lengths and
-  // points, from i to j. The geodesic's segment between two consecutive
-  // events lies in one face: before an edge crossing (towards c_j) in the
-  // face on the query side, after it in the face on the source side. At a
-  // vertex, the faces around it are not crossed; the path goes on in the
-  // face of the next edge crossing (or face i).
-  bool trace(std::uint32_t j, Geodesic_path& out)
-  {
-    portions_.clear();
-    out.points.clear();
-    std::uint32_t current = events_.front().far_face; // face j
-    double run = 0.;
-    Vec3 last = events_.front().point;
-    if(points_)
-      out.points.push_back(last);
-    auto close = [&]() {
-      if(current != no_face)
-        portions_.emplace_back(current, run);
-      run = 0.;
-    };
-    for(std::size_t k = 1; k < events_.size(); ++k)
-    {
-      const Event& e = events_[k];
-      if(e.kind == Event::EDGE)
-      {
-        if(current != e.far_face)
-        {
-          close();
-          current = e.far_face;
-        }
-        run += norm(e.point - last);
-        close();
-        current = e.near_face;
-      }
-      else if(e.kind == Event::VERTEX)
-      {
-        run += norm(e.point - last);
-        close();
-        current = no_face;
-        ++out.vertex_passages;
-      }
-      else // FACE: the source, last event
-      {
-        if(current != e.far_face)
-        {
-          close();
-          current = e.far_face;
-        }
-        run += norm(e.point - last);
-        close();
-      }
-      last = e.point;
-      if(points_)
-        out.points.push_back(last);
-    }
-    std::reverse(out.points.begin(), out.points.end());
-    double total = 0.;
-    for(const auto& p : portions_)
-      total += p.second;
-    if(!std::isfinite(total))
-      return false;
-    // points met twice (a crossing exactly at a vertex is reported once per
-    // edge around it) are kept once
-    const double touched = 1e-9 * total;
-    std::size_t kept = out.points.empty() ? 0 : 1;
-    for(std::size_t k = 1; k < out.points.size(); ++k)
-      if(norm(out.points[k] - out.points[kept - 1]) > touched || k + 1 == out.points.size())
-        out.points[kept++] = out.points[k];
-    out.points.resize(kept);
-    // from i to j: drop the faces only touched (at a vertex or an edge end),
-    // merge repeats, and make sure the path runs from i to j
-    for(std::size_t k = portions_.size(); k-- > 0;)
-    {
-      const auto& p = portions_[k];
-      const bool end = k == 0 || k + 1 == portions_.size();
-      if(!end && !(p.second > touched))
-        continue;
-      if(!out.faces.empty() && out.faces.back() == p.first)
-        out.lengths.back() += p.second;
-      else
-      {
-        out.faces.push_back(p.first);
-        out.lengths.push_back(p.second);
-      }
-    }
-    if(out.faces.empty() || out.faces.front() != source_)
-    {
-      out.faces.insert(out.faces.begin(), source_);
-      out.lengths.insert(out.lengths.begin(), 0.);
-    }
-    // the path ends at the first time it reaches j
-    const auto first_j = std::find(out.faces.begin() + 1, out.faces.end(), j);
-    if(first_j == out.faces.end())
-    {
-      out.faces.push_back(j);
-      out.lengths.push_back(0.);
-    }
-    else
-    {
-      const std::size_t n = std::size_t(first_j - out.faces.begin()) + 1;
-      out.faces.resize(n);
-      out.lengths.resize(n);
-    }
-    return true;
   }
 
   const Flat_mesh& m_;

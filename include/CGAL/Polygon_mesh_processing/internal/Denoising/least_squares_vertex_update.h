@@ -106,6 +106,77 @@ double blocked_dot(const std::vector<Vec3>& a, const std::vector<Vec3>& b, std::
   return s;
 }
 
+// The weights w_v, the right-hand side alpha w p and the inverse of the
+// diagonal blocks of the system for `normals` and `points`; w_v = 0 marks a
+// vertex that stays.
+template <typename ConcurrencyTag>
+void assemble_system(const Flat_mesh& m, const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                     const std::vector<char>& fixed, Least_squares_recovery& ls)
+{
+  const std::size_t nv = m.number_of_vertices();
+  ls.inverse_blocks.resize(nv);
+  ls.weights.resize(nv);
+  ls.rhs.resize(nv);
+  const double alpha = ls.fidelity;
+  for_each_chunk<ConcurrencyTag>(nv, [&](std::size_t vb, std::size_t ve) {
+    for(std::size_t v = vb; v < ve; ++v)
+    {
+      const std::uint32_t fb = m.vertex_face_offsets[v], fe = m.vertex_face_offsets[v + 1];
+      if(fe == fb || (!fixed.empty() && fixed[v]))
+      {
+        ls.weights[v] = 0.;
+        continue;
+      }
+      const double wv = double(fe - fb);
+      Sym3 block = {alpha * wv, alpha * wv, alpha * wv, 0., 0., 0.};
+      for(std::uint32_t k = fb; k < fe; ++k)
+      {
+        const Vec3& n = normals[m.vertex_faces[k]];
+        block[0] += 2. * n[0] * n[0];
+        block[1] += 2. * n[1] * n[1];
+        block[2] += 2. * n[2] * n[2];
+        block[3] += 2. * n[0] * n[1];
+        block[4] += 2. * n[0] * n[2];
+        block[5] += 2. * n[1] * n[2];
+      }
+      ls.weights[v] = wv;
+      ls.rhs[v] = (alpha * wv) * points[v];
+      ls.inverse_blocks[v] = inverse(block);
+    }
+  });
+}
+
+// y = A x on the free vertices (zero on the others), A the system of
+// assemble_system().
+template <typename ConcurrencyTag>
+void apply_system(const Flat_mesh& m, const std::vector<Vec3>& normals, const Least_squares_recovery& ls,
+                  const std::vector<Vec3>& x, std::vector<Vec3>& y)
+{
+  const std::size_t nv = m.number_of_vertices();
+  const std::vector<double>& w = ls.weights;
+  const double alpha = ls.fidelity;
+  y.resize(nv);
+  for_each_chunk<ConcurrencyTag>(nv, [&](std::size_t vb, std::size_t ve) {
+    for(std::size_t v = vb; v < ve; ++v)
+    {
+      if(w[v] == 0.)
+      {
+        y[v] = {0., 0., 0.};
+        continue;
+      }
+      Vec3 s = (alpha * w[v]) * x[v];
+      for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
+      {
+        const std::uint32_t f = m.vertex_faces[k];
+        const auto& t = m.triangles[f];
+        const Vec3& n = normals[f];
+        s = s + dot(n, 3. * x[v] - x[t[0]] - x[t[1]] - x[t[2]]) * n;
+      }
+      y[v] = s;
+    }
+  });
+}
+
 } // namespace least_squares_detail
 
 // One least-squares step: `next` receives the minimiser of E (see above) for
@@ -119,62 +190,9 @@ void least_squares_vertex_step(const Flat_mesh& m, const std::vector<Vec3>& poin
   auto& inv = ls.inverse_blocks;
   auto& w = ls.weights;
   auto &b = ls.rhs, &r = ls.residual, &z = ls.preconditioned, &d = ls.direction, &q = ls.product;
-  inv.resize(nv);
-  w.resize(nv);
-  b.resize(nv);
-  const double alpha = ls.fidelity;
-
-  // w_v, the right-hand side alpha w p and the inverse of the diagonal
-  // blocks; w_v = 0 marks a vertex that stays
-  for_each_chunk<ConcurrencyTag>(nv, [&](std::size_t vb, std::size_t ve) {
-    for(std::size_t v = vb; v < ve; ++v)
-    {
-      const std::uint32_t fb = m.vertex_face_offsets[v], fe = m.vertex_face_offsets[v + 1];
-      if(fe == fb || (!fixed.empty() && fixed[v]))
-      {
-        w[v] = 0.;
-        continue;
-      }
-      const double wv = double(fe - fb);
-      L::Sym3 block = {alpha * wv, alpha * wv, alpha * wv, 0., 0., 0.};
-      for(std::uint32_t k = fb; k < fe; ++k)
-      {
-        const Vec3& n = normals[m.vertex_faces[k]];
-        block[0] += 2. * n[0] * n[0];
-        block[1] += 2. * n[1] * n[1];
-        block[2] += 2. * n[2] * n[2];
-        block[3] += 2. * n[0] * n[1];
-        block[4] += 2. * n[0] * n[2];
-        block[5] += 2. * n[1] * n[2];
-      }
-      w[v] = wv;
-      b[v] = (alpha * wv) * points[v];
-      inv[v] = L::inverse(block);
-    }
-  });
-
-  // y = A x on the free vertices (zero on the others)
+  L::assemble_system<ConcurrencyTag>(m, points, normals, fixed, ls);
   const auto apply = [&](const std::vector<Vec3>& x, std::vector<Vec3>& y) {
-    y.resize(nv);
-    for_each_chunk<ConcurrencyTag>(nv, [&](std::size_t vb, std::size_t ve) {
-      for(std::size_t v = vb; v < ve; ++v)
-      {
-        if(w[v] == 0.)
-        {
-          y[v] = {0., 0., 0.};
-          continue;
-        }
-        Vec3 s = (alpha * w[v]) * x[v];
-        for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
-        {
-          const std::uint32_t f = m.vertex_faces[k];
-          const auto& t = m.triangles[f];
-          const Vec3& n = normals[f];
-          s = s + dot(n, 3. * x[v] - x[t[0]] - x[t[1]] - x[t[2]]) * n;
-        }
-        y[v] = s;
-      }
-    });
+    L::apply_system<ConcurrencyTag>(m, normals, ls, x, y);
   };
 
   next = points;
