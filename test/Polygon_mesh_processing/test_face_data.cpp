@@ -24,6 +24,29 @@
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
+// Adds four fins (triangles) on the edge (t[0], t[1]) of face 0 of `m` and
+// lists the faces around each vertex again.
+void add_fins(D::Flat_mesh& m)
+{
+  const std::array<std::uint32_t, 3> t = m.triangles[0];
+  for(int k = 0; k < 4; ++k)
+  {
+    m.points.push_back({0.01 * k, 0.02, 0.1 + 0.1 * k});
+    m.triangles.push_back({t[0], t[1], std::uint32_t(m.points.size() - 1)});
+  }
+  m.vertex_face_offsets.assign(m.points.size() + 1, 0);
+  for(const auto& u : m.triangles)
+    for(std::uint32_t v : u)
+      ++m.vertex_face_offsets[v + 1];
+  for(std::size_t v = 0; v < m.points.size(); ++v)
+    m.vertex_face_offsets[v + 1] += m.vertex_face_offsets[v];
+  m.vertex_faces.assign(m.vertex_face_offsets.back(), 0);
+  std::vector<std::uint32_t> fill(m.vertex_face_offsets.begin(), m.vertex_face_offsets.end() - 1);
+  for(std::size_t f = 0; f < m.triangles.size(); ++f)
+    for(std::uint32_t v : m.triangles[f])
+      m.vertex_faces[fill[v]++] = std::uint32_t(f);
+}
+
 // The mean distance d between adjacent centroids and the mean edge length
 // are the same, bitwise, with Parallel_tag (values computed in parallel,
 // added in order) as with Sequential_tag: on noisy fandisk, and on a grid
@@ -38,23 +61,7 @@ TEST(FaceData, MeansAreTheSameWithEveryConcurrencyTag)
   Flat_setup<> fins(denoising_test::plane_grid<Mesh>(48)); // 4608 faces
   {
     D::Flat_mesh& m = fins.m;
-    const std::array<std::uint32_t, 3> t = m.triangles[0];
-    for(int k = 0; k < 4; ++k) // fins on the edge (t[0], t[1]) of face 0
-    {
-      m.points.push_back({0.01 * k, 0.02, 0.1 + 0.1 * k});
-      m.triangles.push_back({t[0], t[1], std::uint32_t(m.points.size() - 1)});
-    }
-    m.vertex_face_offsets.assign(m.points.size() + 1, 0);
-    for(const auto& u : m.triangles)
-      for(std::uint32_t v : u)
-        ++m.vertex_face_offsets[v + 1];
-    for(std::size_t v = 0; v < m.points.size(); ++v)
-      m.vertex_face_offsets[v + 1] += m.vertex_face_offsets[v];
-    m.vertex_faces.assign(m.vertex_face_offsets.back(), 0);
-    std::vector<std::uint32_t> fill(m.vertex_face_offsets.begin(), m.vertex_face_offsets.end() - 1);
-    for(std::size_t f = 0; f < m.triangles.size(); ++f)
-      for(std::uint32_t v : m.triangles[f])
-        m.vertex_faces[fill[v]++] = std::uint32_t(f);
+    add_fins(m);
     D::compute_face_data<CGAL::Sequential_tag>(m, m.points, fins.fd);
   }
   for(const Flat_setup<>* s : {&noisy, static_cast<const Flat_setup<>*>(&fins)})
@@ -80,22 +87,7 @@ TEST(FlatMesh, EdgeWalksSeeEveryFaceOnAnEdgeOnce)
   Flat_setup<> grid(denoising_test::plane_grid<Mesh>(6));
   D::Flat_mesh& m = grid.m;
   const std::array<std::uint32_t, 3> t = m.triangles[0];
-  for(int k = 0; k < 4; ++k)
-  {
-    m.points.push_back({0.01 * k, 0.02, 0.1 + 0.1 * k});
-    m.triangles.push_back({t[0], t[1], std::uint32_t(m.points.size() - 1)});
-  }
-  m.vertex_face_offsets.assign(m.points.size() + 1, 0);
-  for(const auto& u : m.triangles)
-    for(std::uint32_t v : u)
-      ++m.vertex_face_offsets[v + 1];
-  for(std::size_t v = 0; v < m.points.size(); ++v)
-    m.vertex_face_offsets[v + 1] += m.vertex_face_offsets[v];
-  m.vertex_faces.assign(m.vertex_face_offsets.back(), 0);
-  std::vector<std::uint32_t> fill(m.vertex_face_offsets.begin(), m.vertex_face_offsets.end() - 1);
-  for(std::size_t f = 0; f < m.triangles.size(); ++f)
-    for(std::uint32_t v : m.triangles[f])
-      m.vertex_faces[fill[v]++] = std::uint32_t(f);
+  add_fins(m);
 
   // brute force: the faces of each undirected edge
   const auto key = [](std::uint32_t a, std::uint32_t b) { return std::make_pair((std::min)(a, b), (std::max)(a, b)); };
@@ -119,7 +111,9 @@ TEST(FlatMesh, EdgeWalksSeeEveryFaceOnAnEdgeOnce)
     const std::size_t n = entry.second.size();
     ++counts[n >= 5 ? 3 : n >= 3 ? 2 : n - 1];
     if(n >= 5)
+    {
       EXPECT_EQ(entry.first, key(t[0], t[1])); // the edge with the fins
+    }
   }
   EXPECT_EQ(counts[3], 1u);
   EXPECT_EQ(counts[2], 0u);
