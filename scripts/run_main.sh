@@ -4,8 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
-bash scripts/build.sh --target intrinsic_denoising_example
+bash scripts/build.sh --target denoise_and_report
 mkdir -p build/output
 cd build/output
-../examples/Polygon_mesh_processing/intrinsic_denoising_example "$@"
+../examples/Polygon_mesh_processing/denoise_and_report "$@"
 echo "output directory: $(pwd)"
