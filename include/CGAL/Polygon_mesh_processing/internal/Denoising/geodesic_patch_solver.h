@@ -14,6 +14,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/geodesic_patch_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/geodesic_path.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vec3.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_fans.h>
 
 #include <CGAL/Surface_mesh_shortest_path.h>
 
@@ -103,7 +104,7 @@ public:
   Geodesic_patch_solver(const Flat_mesh& m, const Face_data& fd, unsigned int patch_rings)
       : m_(m), fd_(fd), rings_(patch_rings), face_stamp_(m.number_of_faces(), no_face),
         face_local_(m.number_of_faces(), 0), vertex_stamp_(m.number_of_vertices(), no_face),
-        tested_stamp_(m.number_of_faces(), no_face), bridge_stamp_(m.number_of_vertices(), no_face),
+        tested_stamp_(m.number_of_faces(), no_face), bridge_stamp_(m.number_of_vertices(), no_face), fans_(m),
         corner_degrees_(3 * m.number_of_faces())
   {
     for(std::size_t f = 0; f < m.number_of_faces(); ++f)
@@ -113,13 +114,6 @@ public:
         corner_degrees_[3 * f + c] =
             corner_angle_degrees(m.points[t[(c + 2) % 3]], m.points[t[c]], m.points[t[(c + 1) % 3]]);
       }
-    one_fan_.assign(m.number_of_vertices(), 0);
-    for(std::uint32_t v = 0; v < m.number_of_vertices(); ++v)
-    {
-      fan_faces_.assign(m.vertex_faces.begin() + m.vertex_face_offsets[v],
-                        m.vertex_faces.begin() + m.vertex_face_offsets[v + 1]);
-      one_fan_[v] = group_fans(v) == 1;
-    }
   }
   // shortest_path_ refers to patch_: neither copied nor moved
   Geodesic_patch_solver(const Geodesic_patch_solver&) = delete;
@@ -307,57 +301,10 @@ private:
     }
   }
 
-  // Groups the selected faces around v (in fan_faces_) into fans of faces
-  // connected through edges (v, w) (fan_find() gives a fan's representative);
-  // returns the number of fans.
+  // Groups the selected faces around v into fans (in fans_); returns their number.
   std::size_t selected_fans(std::uint32_t v)
   {
-    fan_faces_.clear();
-    for(std::uint32_t q = m_.vertex_face_offsets[v]; q < m_.vertex_face_offsets[v + 1]; ++q)
-    {
-      const std::uint32_t g = m_.vertex_faces[q];
-      if(face_stamp_[g] == stamp_)
-        fan_faces_.push_back(g);
-    }
-    const std::size_t n = fan_faces_.size();
-    fan_root_.resize(n);
-    // all the faces around a vertex whose faces form one fan: one fan (the
-    // common case, inside the patch)
-    if(one_fan_[v] && n == m_.vertex_face_offsets[v + 1] - m_.vertex_face_offsets[v])
-    {
-      std::fill(fan_root_.begin(), fan_root_.end(), std::size_t(0));
-      return n == 0 ? 0 : 1;
-    }
-    return group_fans(v);
-  }
-
-  // Union-find of fan_faces_ (around v) by shared edges; returns the number of fans.
-  std::size_t group_fans(std::uint32_t v)
-  {
-    const std::size_t n = fan_faces_.size();
-    fan_root_.resize(n);
-    for(std::size_t a = 0; a < n; ++a)
-      fan_root_[a] = a;
-    std::size_t fans = n;
-    for(std::size_t a = 0; a < n; ++a)
-      for(std::size_t b = a + 1; b < n; ++b)
-        if(share_edge_at(fan_faces_[a], fan_faces_[b], v))
-        {
-          const std::size_t ra = fan_find(a), rb = fan_find(b);
-          if(ra != rb)
-          {
-            fan_root_[ra] = rb;
-            --fans;
-          }
-        }
-    return fans;
-  }
-
-  std::size_t fan_find(std::size_t a)
-  {
-    while(fan_root_[a] != a)
-      a = fan_root_[a] = fan_root_[fan_root_[a]];
-    return a;
+    return fans_.group_selected(v, [this](std::uint32_t g) { return face_stamp_[g] == stamp_; });
   }
 
   // Copies the selected faces into patch_, one vertex copy per fan of
@@ -406,19 +353,19 @@ private:
           continue;
         vertex_stamp_[v] = stamp_;
         selected_fans(v);
-        const std::size_t n = fan_faces_.size();
+        const std::size_t n = fans_.size();
         fan_vertex_.assign(n, vertex_descriptor());
         const Vec3& p = m_.points[v];
         for(std::size_t a = 0; a < n; ++a)
         {
-          const std::size_t r = fan_find(a);
+          const std::size_t r = fans_.find(a);
           if(fan_vertex_[r] == vertex_descriptor())
           {
             fan_vertex_[r] = vertex_descriptor(std::uint32_t(vertex_points_.size()));
             vertex_points_.push_back(p);
             angle_sum_.push_back(0.);
           }
-          const std::uint32_t g = fan_faces_[a];
+          const std::uint32_t g = fans_.face(a);
           const auto& t = m_.triangles[g];
           const int cg = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
           corner_[3 * face_local_[g] + cg] = std::uint32_t(fan_vertex_[r]);
@@ -520,16 +467,6 @@ private:
     }
   }
 
-  bool share_edge_at(std::uint32_t f, std::uint32_t g, std::uint32_t v) const
-  {
-    const auto& a = m_.triangles[f];
-    const auto& b = m_.triangles[g];
-    for(std::uint32_t x : a)
-      if(x != v && (b[0] == x || b[1] == x || b[2] == x))
-        return true;
-    return false;
-  }
-
   const Flat_mesh& m_;
   const Face_data& fd_;
   unsigned int rings_;
@@ -538,11 +475,9 @@ private:
   std::vector<std::uint32_t> face_stamp_, face_local_, vertex_stamp_, tested_stamp_, bridge_stamp_;
   std::vector<std::uint32_t> global_; // local face -> mesh face
   std::vector<std::uint32_t> corner_; // local face corner -> patch vertex
-  std::vector<std::uint32_t> fan_faces_;
-  std::vector<std::size_t> fan_root_;
+  Vertex_fans fans_;
   std::vector<vertex_descriptor> fan_vertex_;
   std::vector<std::uint32_t> out_first_, out_next_, border_out_;
-  std::vector<char> one_fan_;          // by mesh vertex: its faces are connected through edges around it
   std::vector<double> corner_degrees_; // by mesh face corner: angle (CGAL's formula)
   std::vector<double> angle_sum_;      // by patch vertex: sum of its corner angles in the patch, degrees
   std::vector<Vec3> vertex_points_;    // by patch vertex
