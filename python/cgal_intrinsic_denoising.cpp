@@ -474,6 +474,18 @@ unsigned int vertex_steps(long long v, const char* fname)
   return static_cast<unsigned int>(v);
 }
 
+// The parameters the two normal filters ZFAT11 and ZDZ15 share.
+template <typename Map>
+auto normal_filter_np(const Map& map, long long iterations, double sigma_spatial, double sigma_range,
+                      long long vertex_iterations, PMP::Vertex_update update, const char* fname)
+{
+  return classic_np(map, iterations, fname)
+      .sigma_spatial(sigma_spatial)
+      .sigma_range(sigma_range)
+      .vertex_iterations(vertex_steps(vertex_iterations, fname))
+      .vertex_update(update);
+}
+
 // One of the noise models on a copy of (V, F): `noise(mesh, np)` with the
 // seed and the constrained vertices as named parameters.
 template <typename Noise>
@@ -652,11 +664,8 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
           throw py::value_error("bilateral_normal_denoising(): give neighbor_radius or relative_neighbor_radius, "
                                 "not both");
         return run_on_copy(V, F, constrained, threads, [&](Mesh& mesh, const auto& map) {
-          const auto np = classic_np(map, number_of_iterations, fname)
-                              .sigma_spatial(sigma_spatial)
-                              .sigma_range(sigma_range)
-                              .vertex_iterations(vertex_steps(vertex_iterations, fname))
-                              .vertex_update(update);
+          const auto np =
+              normal_filter_np(map, number_of_iterations, sigma_spatial, sigma_range, vertex_iterations, update, fname);
           if(neighbor_radius)
             PMP::bilateral_normal_denoising<Tag>(mesh, np.neighbor_radius(*neighbor_radius));
           else if(relative_neighbor_radius)
@@ -695,11 +704,8 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
         const char* fname = "guided_normal_denoising()";
         const PMP::Vertex_update update = read_vertex_update(vertex_update);
         return run_on_copy(V, F, constrained, threads, [&](Mesh& mesh, const auto& map) {
-          const auto np = classic_np(map, number_of_iterations, fname)
-                              .sigma_spatial(sigma_spatial)
-                              .sigma_range(sigma_range)
-                              .vertex_iterations(vertex_steps(vertex_iterations, fname))
-                              .vertex_update(update);
+          const auto np =
+              normal_filter_np(map, number_of_iterations, sigma_spatial, sigma_range, vertex_iterations, update, fname);
           if(neighbor_radius)
             PMP::guided_normal_denoising<Tag>(mesh, np.neighbor_radius(*neighbor_radius));
           else

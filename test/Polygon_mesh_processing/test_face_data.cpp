@@ -34,17 +34,7 @@ void add_fins(D::Flat_mesh& m)
     m.points.push_back({0.01 * k, 0.02, 0.1 + 0.1 * k});
     m.triangles.push_back({t[0], t[1], std::uint32_t(m.points.size() - 1)});
   }
-  m.vertex_face_offsets.assign(m.points.size() + 1, 0);
-  for(const auto& u : m.triangles)
-    for(std::uint32_t v : u)
-      ++m.vertex_face_offsets[v + 1];
-  for(std::size_t v = 0; v < m.points.size(); ++v)
-    m.vertex_face_offsets[v + 1] += m.vertex_face_offsets[v];
-  m.vertex_faces.assign(m.vertex_face_offsets.back(), 0);
-  std::vector<std::uint32_t> fill(m.vertex_face_offsets.begin(), m.vertex_face_offsets.end() - 1);
-  for(std::size_t f = 0; f < m.triangles.size(); ++f)
-    for(std::uint32_t v : m.triangles[f])
-      m.vertex_faces[fill[v]++] = std::uint32_t(f);
+  D::list_faces_around_vertices(m);
 }
 
 // The mean distance d between adjacent centroids and the mean edge length

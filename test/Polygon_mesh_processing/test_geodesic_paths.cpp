@@ -65,18 +65,7 @@ D::Flat_mesh flat_from_soup(const Soup& s)
     m.points.push_back({p[0], p[1], p[2]});
   for(const auto& t : s.triangles)
     m.triangles.push_back({std::uint32_t(t[0]), std::uint32_t(t[1]), std::uint32_t(t[2])});
-  const std::size_t nv = m.points.size();
-  m.vertex_face_offsets.assign(nv + 1, 0);
-  for(const auto& t : m.triangles)
-    for(std::uint32_t v : t)
-      ++m.vertex_face_offsets[v + 1];
-  for(std::size_t v = 0; v < nv; ++v)
-    m.vertex_face_offsets[v + 1] += m.vertex_face_offsets[v];
-  m.vertex_faces.resize(m.vertex_face_offsets[nv]);
-  std::vector<std::uint32_t> fill(m.vertex_face_offsets.begin(), m.vertex_face_offsets.end() - 1);
-  for(std::uint32_t f = 0; f < m.triangles.size(); ++f)
-    for(std::uint32_t v : m.triangles[f])
-      m.vertex_faces[fill[v]++] = f;
+  D::list_faces_around_vertices(m);
   return m;
 }
 

@@ -95,6 +95,24 @@ struct Flat_mesh
   }
 };
 
+// Fills m.vertex_face_offsets and m.vertex_faces from m.points and
+// m.triangles: the faces around each vertex, in increasing face index order.
+inline void list_faces_around_vertices(Flat_mesh& m)
+{
+  const std::size_t nv = m.points.size();
+  m.vertex_face_offsets.assign(nv + 1, 0);
+  for(const auto& t : m.triangles)
+    for(std::uint32_t v : t)
+      ++m.vertex_face_offsets[v + 1];
+  for(std::size_t v = 0; v < nv; ++v)
+    m.vertex_face_offsets[v + 1] += m.vertex_face_offsets[v];
+  m.vertex_faces.resize(m.vertex_face_offsets[nv]);
+  std::vector<std::uint32_t> fill(m.vertex_face_offsets.begin(), m.vertex_face_offsets.end() - 1);
+  for(std::size_t f = 0; f < m.triangles.size(); ++f)
+    for(std::uint32_t v : m.triangles[f])
+      m.vertex_faces[fill[v]++] = static_cast<std::uint32_t>(f);
+}
+
 template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap, typename FaceIndexMap>
 Flat_mesh make_flat_mesh(const TriangleMesh& tmesh, VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim,
                          const char* function_name)
@@ -124,18 +142,7 @@ Flat_mesh make_flat_mesh(const TriangleMesh& tmesh, VertexPointMap vpm, VertexIn
     for(auto v : CGAL::vertices_around_face(halfedge(f, tmesh), tmesh))
       t[k++] = static_cast<std::uint32_t>(get(vim, v));
   }
-  // vertex -> faces, faces listed in increasing index order
-  m.vertex_face_offsets.assign(nv + 1, 0);
-  for(const auto& t : m.triangles)
-    for(std::uint32_t v : t)
-      ++m.vertex_face_offsets[v + 1];
-  for(std::size_t v = 0; v < nv; ++v)
-    m.vertex_face_offsets[v + 1] += m.vertex_face_offsets[v];
-  m.vertex_faces.resize(m.vertex_face_offsets[nv]);
-  std::vector<std::uint32_t> fill(m.vertex_face_offsets.begin(), m.vertex_face_offsets.end() - 1);
-  for(std::size_t f = 0; f < nf; ++f)
-    for(std::uint32_t v : m.triangles[f])
-      m.vertex_faces[fill[v]++] = static_cast<std::uint32_t>(f);
+  list_faces_around_vertices(m);
   return m;
 }
 
