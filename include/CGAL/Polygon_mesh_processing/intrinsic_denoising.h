@@ -192,8 +192,9 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
     vertex to vertex leaves it slightly negative; removing shape (flattened
     curvature, rounded edges) makes it rise, as a smooth residual agrees
     across edges. A candidate keeps the iterate before the first whose
-    correlation reaches \f$-0.05\f$ (at most 40 iterations; a noise-free
-    mesh is kept as it is).
+    correlation reaches \f$-0.05\f$ (at most 40 iterations). A noise-free
+    mesh is usually kept as it is; a coarse irregular one may not be (the
+    user manual gives the cases).
   - <em>Which candidate is kept.</em> If the flattest result has at least
     30% of its interior edges under 1 degree (piecewise flat: noise leaves
     no edge that flat, a curved surface few), only the candidates within
