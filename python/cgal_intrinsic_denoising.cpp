@@ -336,6 +336,8 @@ const char* stop_reason_name(PMP::Intrinsic_stop_reason r)
     return "noise_level_reached";
   case PMP::Intrinsic_stop_reason::CONVERGED:
     return "converged";
+  case PMP::Intrinsic_stop_reason::SELF_CHECK:
+    return "self_check";
   case PMP::Intrinsic_stop_reason::RESIDUAL_CORRELATED:
     break;
   }
@@ -377,6 +379,7 @@ py::dict report_dict(const PMP::Intrinsic_denoising_report& r)
   d["chosen_candidate"] = r.chosen_candidate;
   d["inlier_residual_correlation"] = r.inlier_residual_correlation;
   d["outlier_vertices"] = r.outlier_vertices;
+  d["self_check_errors"] = r.self_check_errors;
   return d;
 }
 

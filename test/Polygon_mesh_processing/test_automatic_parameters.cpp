@@ -8,6 +8,7 @@
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/noise_estimate.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/sparse_noise.h>
@@ -380,6 +381,9 @@ TEST(AutomaticParameters, SelectionIsThreadIndependent)
   const auto ra = PMP::intrinsic_denoising<CGAL::Sequential_tag>(a);
   const auto rb = PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(b);
   EXPECT_EQ(ra.chosen_candidate, rb.chosen_candidate);
+  EXPECT_FALSE(ra.self_check_errors.empty());
+  EXPECT_EQ(ra.self_check_errors, rb.self_check_errors);
+  EXPECT_EQ(ra.iterations, rb.iterations);
   for(std::size_t c = 0; c < ra.candidates.size(); ++c)
   {
     EXPECT_EQ(ra.candidates[c].iterations, rb.candidates[c].iterations);
@@ -567,4 +571,134 @@ TEST(SparseNoise, ImpulsiveNoiseMovesOnlyTheOutliers)
   const PMP::Intrinsic_denoising_report g = PMP::intrinsic_denoising(gaussian);
   EXPECT_EQ(g.outlier_vertices, 0u);
   EXPECT_LT(g.inlier_residual_correlation, D::Sparse_noise_rules::min_inlier_correlation);
+}
+
+namespace {
+
+D::Flat_mesh flat_of(const Mesh& m)
+{
+  return D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters>(m, CGAL::parameters::default_values())
+      .flat(m, "test");
+}
+
+} // namespace
+
+// The synthetic copy of the self-check carries the residual's normal
+// components (along the result's vertex normals), shuffled over the free
+// vertices: the same values, elsewhere; fixed vertices stay on the result;
+// the same seed gives the same copy, another seed another.
+TEST(SelfCheck, SyntheticCopyShufflesTheResidual)
+{
+  Mesh noisy = fandisk();
+  PMP::add_gaussian_noise(noisy, 0.3, CGAL::parameters::random_seed(1));
+  Mesh result = noisy;
+  PMP::intrinsic_denoising(result, CGAL::parameters::number_of_iterations(3));
+  const D::Flat_mesh input = flat_of(noisy), denoised = flat_of(result);
+  const std::size_t nv = input.number_of_vertices();
+  const D::Csr adjacency = D::vertex_adjacency(input);
+  std::vector<char> fixed(nv, 0);
+  for(std::size_t v = 0; v < nv; v += 7)
+    fixed[v] = 1;
+  const std::vector<D::Vec3> copy = D::synthetic_noisy_copy(input, adjacency, input.points, denoised.points, fixed, 1);
+  const std::vector<D::Vec3> normals = D::area_weighted_vertex_normals(input, denoised.points);
+  std::vector<double> before, after;
+  std::size_t moved_elsewhere = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    if(fixed[v])
+    {
+      ASSERT_EQ(copy[v][0], denoised.points[v][0]);
+      ASSERT_EQ(copy[v][1], denoised.points[v][1]);
+      ASSERT_EQ(copy[v][2], denoised.points[v][2]);
+      continue;
+    }
+    const D::Vec3 offset = copy[v] - denoised.points[v];
+    // along the normal only
+    EXPECT_LT(D::norm(D::cross(offset, normals[v])), 1e-9);
+    before.push_back(D::dot(input.points[v] - denoised.points[v], normals[v]));
+    after.push_back(D::dot(offset, normals[v]));
+    moved_elsewhere += std::abs(after.back() - before.back()) > 1e-9 ? 1 : 0;
+  }
+  EXPECT_GT(moved_elsewhere, before.size() / 2); // shuffled
+  std::sort(before.begin(), before.end());
+  std::sort(after.begin(), after.end());
+  ASSERT_EQ(before.size(), after.size());
+  for(std::size_t i = 0; i < before.size(); ++i)
+    ASSERT_NEAR(before[i], after[i], 1e-12);
+  const std::vector<D::Vec3> again = D::synthetic_noisy_copy(input, adjacency, input.points, denoised.points, fixed, 1);
+  const std::vector<D::Vec3> other = D::synthetic_noisy_copy(input, adjacency, input.points, denoised.points, fixed, 2);
+  std::size_t same = 0, differs = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    same += again[v][0] == copy[v][0] && again[v][1] == copy[v][1] && again[v][2] == copy[v][2] ? 1 : 0;
+    differs += other[v][0] != copy[v][0] ? 1 : 0;
+  }
+  EXPECT_EQ(same, nv);
+  EXPECT_GT(differs, before.size() / 2);
+}
+
+// The iterations kept: the largest k whose error is within the tolerance of
+// the smallest.
+TEST(SelfCheck, IterationsKeptFromTheErrors)
+{
+  const double t = D::Selection_rules::self_check_tolerance;
+  EXPECT_EQ(D::self_check_iterations({}), 0u);
+  EXPECT_EQ(D::self_check_iterations({1., 2., 3.}), 0u);                      // every iteration makes it worse
+  EXPECT_EQ(D::self_check_iterations({9., 5., 3., 2.}), 3u);                  // every iteration helps
+  EXPECT_EQ(D::self_check_iterations({9., 2., 3., 2.5}), 1u);                 // past the minimum, too far above it
+  EXPECT_EQ(D::self_check_iterations({9., 2., 2. * (1. + 0.5 * t), 3.}), 2u); // within the tolerance
+  EXPECT_EQ(D::self_check_iterations({9., 2., 2. * (1. + 2. * t)}), 1u);
+}
+
+// A noise-free CAD part (CGAL's cheese: flat faces, sharp edges, small curved
+// holes, irregular triangles) on which the kept candidate's one iteration
+// removes shape (3.4 degrees of E_n). On the synthetic copy of that result
+// the iteration makes the normals worse than the copy itself, so the
+// self-check keeps the input, which comes back bit for bit.
+TEST(SelfCheck, NoiseFreeCadPartIsKeptAsItIs)
+{
+  Mesh reference;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/cheese.off"), reference));
+  Mesh m = reference;
+  const PMP::Intrinsic_denoising_report r = PMP::intrinsic_denoising(m);
+  ASSERT_LT(r.chosen_candidate, r.candidates.size());
+  EXPECT_GT(r.candidates[r.chosen_candidate].iterations, 0u);
+  ASSERT_EQ(r.self_check_errors.size(), r.candidates[r.chosen_candidate].iterations + 1);
+  EXPECT_GT(r.self_check_errors.back(), r.self_check_errors.front());
+  EXPECT_EQ(r.iterations, 0u);
+  EXPECT_EQ(r.stop_reason, PMP::Intrinsic_stop_reason::SELF_CHECK);
+  EXPECT_EQ(r.displacement, 0.);
+  for(auto v : vertices(m))
+    ASSERT_EQ(m.point(v), reference.point(v));
+}
+
+// When the self-check shortens a run, the result is that of the kept kernel
+// and radius with the shorter count, run from the input with those
+// parameters given (same bits: the selection's runs are plain runs).
+TEST(SelfCheck, ShortenedRunIsThePlainRunWithFewerIterations)
+{
+  Mesh reference;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/anchor.off"), reference));
+  Mesh noisy = reference;
+  PMP::add_impulsive_noise(noisy, 0.1, 1.0, CGAL::parameters::random_seed(1));
+  Mesh m = noisy;
+  const PMP::Intrinsic_denoising_report r = PMP::intrinsic_denoising(m);
+  ASSERT_EQ(r.stop_reason, PMP::Intrinsic_stop_reason::SELF_CHECK);
+  const unsigned int ran = r.candidates[r.chosen_candidate].iterations;
+  EXPECT_LT(r.iterations, ran);
+  EXPECT_EQ(r.iterations, D::self_check_iterations(r.self_check_errors));
+  Mesh plain = noisy, full = noisy;
+  const auto np = CGAL::parameters::sigma_spatial(r.sigma_spatial)
+                      .sigma_range(r.sigma_range)
+                      .relative_neighbor_radius(r.relative_neighbor_radius)
+                      .stop_when_converged(false);
+  PMP::intrinsic_denoising(plain, np.number_of_iterations(r.iterations));
+  for(auto v : vertices(m))
+    ASSERT_EQ(m.point(v), plain.point(v));
+  // and it is closer to the noise-free part than the run it replaced
+  PMP::intrinsic_denoising(full, np.number_of_iterations(ran));
+  std::cout << "impulsive noise on anchor: E_n noisy " << PMP::face_normal_error(noisy, reference) << ", " << ran
+            << " iterations " << PMP::face_normal_error(full, reference) << ", self-checked " << r.iterations << " "
+            << PMP::face_normal_error(m, reference) << "\n";
+  EXPECT_LT(PMP::face_normal_error(m, reference), PMP::face_normal_error(full, reference));
 }

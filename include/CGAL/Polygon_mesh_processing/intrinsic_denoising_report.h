@@ -30,7 +30,11 @@ enum class Intrinsic_stop_reason
   CONVERGED,
   /// the automatic selection: the residual between the input and the result
   /// became correlated across edges (shape, not noise, was being removed)
-  RESIDUAL_CORRELATED
+  RESIDUAL_CORRELATED,
+  /// the automatic selection's self-check: on a synthetic noisy copy of the
+  /// kept result, fewer iterations of the kept kernel came closer to the result
+  /// (see `Intrinsic_denoising_report::self_check_errors`)
+  SELF_CHECK
 };
 
 /// \ingroup PMP_denoising_grp
@@ -100,6 +104,16 @@ struct Intrinsic_denoising_report
   /// (impulsive) noise, which alone were then denoised, all others staying in
   /// place; 0 if the noise was taken for dense (every vertex denoised)
   std::size_t outlier_vertices = 0;
+  /// with the automatic selection and dense noise: the self-check of the kept
+  /// candidate. Its result is taken for the noise-free surface and given the
+  /// noise it removed (the normal components of the residual, shuffled over
+  /// the vertices); entry k is the mean angle in degrees between the face
+  /// normals of that synthetic copy after k iterations of the kept kernel and
+  /// those of the result (entry 0: the copy itself). The result kept is that
+  /// of the largest k whose entry is within 2% of the smallest; empty if the
+  /// check did not run (the kept candidate ran no iteration, or the noise was
+  /// sparse)
+  std::vector<double> self_check_errors;
   /// the candidates of the automatic selection (empty if it did not run:
   /// see `intrinsic_denoising()` for when it does), in the order they ran
   std::vector<Intrinsic_candidate_report> candidates;

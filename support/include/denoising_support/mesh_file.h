@@ -318,6 +318,14 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
                 : std::string("dense: every vertex denoised"))
         << " (residual correlation " << r.inlier_residual_correlation
         << " at the vertices within 3 robust deviations; sparse from 0.1)\n";
+    if(!r.self_check_errors.empty())
+    {
+      // the self-check's curve, and the iterations it kept
+      out << "self-check on a synthetic noisy copy of the result (angle to the result after k iterations):";
+      for(std::size_t k = 0; k < r.self_check_errors.size(); ++k)
+        out << (k % 10 == 0 ? "\n   " : "") << " " << k << ": " << r.self_check_errors[k];
+      out << "\n";
+    }
   }
   if(r.noise_level_estimated || r.noise_level > 0. || r.automatic_parameters)
     out << "noise level: " << r.noise_level << " x mean edge length ("
@@ -332,6 +340,7 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
       << (r.stop_reason == Reason::NOISE_LEVEL_REACHED   ? "displacement reached the noise level"
           : r.stop_reason == Reason::CONVERGED           ? "converged"
           : r.stop_reason == Reason::RESIDUAL_CORRELATED ? "the residual became correlated across edges"
+          : r.stop_reason == Reason::SELF_CHECK          ? "the self-check kept fewer iterations"
                                                          : "iteration limit");
   if(r.stop_reason != Reason::ITERATION_LIMIT || r.displacement > 0.)
     out << " (RMS displacement " << r.displacement << " x mean edge length)";

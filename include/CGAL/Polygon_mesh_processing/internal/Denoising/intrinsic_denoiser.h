@@ -71,9 +71,10 @@ public:
   }
 
   // The automatic selection: runs the candidates of Selection_rules, sharing
-  // the paths of each radius, keeps the one chosen (denoised again with only
-  // its outliers moving if the noise is sparse) and describes all of them in
-  // the report.
+  // the paths of each radius, keeps the one chosen and describes all of them
+  // in the report. The kept run is then denoised again with only its
+  // outliers moving if the noise is sparse, or else checked on a synthetic
+  // copy of its result and shortened if the check says so.
   Candidate_run select_automatically()
   {
     Automatic_selection<ConcurrencyTag> selection(vertex_iterations_, prevent_folds_, keep_normals, vertex_update_);
@@ -91,23 +92,25 @@ public:
     const std::size_t best = selection.choose();
     std::vector<Candidate_run>& runs = selection.runs();
     report_selection(selection, best);
-
-    // Sparse noise (sparse_noise.h): if the kept result's residual says that
-    // only a few vertices were noisy, those alone are denoised, from the
-    // input, with the kept kernel, radius and number of iterations.
     if(runs[best].iterations == 0)
       return std::move(runs[best]);
-    const Sparse_noise_test test = selection.test_sparse_noise(runs[best]);
-    report_.inlier_residual_correlation = test.inlier_correlation;
-    if(!test.sparse)
-      return std::move(runs[best]);
+
     const Selection_rules::Candidate& kept = Selection_rules::candidates[best];
     if(kept.relative_radius != Selection_rules::candidates[n - 1].relative_radius)
       selection.setup_paths(candidate_setup(kept), constrained); // the paths of the kept candidate's radius
-    Candidate_run outliers_only = selection.run_outliers_only(kept.sigma, report_.iterations, test.outlier);
-    report_.outlier_vertices = test.outliers;
-    report_.displacement = outliers_only.trajectory.back().rms;
-    return outliers_only;
+    // Sparse noise (sparse_noise.h): if the kept result's residual says that
+    // only a few vertices were noisy, those alone are denoised, from the
+    // input, with the kept kernel, radius and number of iterations.
+    const Sparse_noise_test test = selection.test_sparse_noise(runs[best]);
+    report_.inlier_residual_correlation = test.inlier_correlation;
+    if(test.sparse)
+    {
+      Candidate_run outliers_only = selection.run_outliers_only(kept.sigma, report_.iterations, test.outlier);
+      report_.outlier_vertices = test.outliers;
+      report_.displacement = outliers_only.trajectory.back().rms;
+      return outliers_only;
+    }
+    return self_check(selection, std::move(runs[best]), kept.sigma);
   }
 
   // One denoising from the input with the parameters given and, for the
@@ -184,6 +187,22 @@ private:
     defaults.relative_radius = candidate.relative_radius;
     return make_intrinsic_setup<ConcurrencyTag>(tmesh_, np_, maps_, fname,
                                                 [&defaults](const Flat_mesh&) { return defaults; });
+  }
+
+  // The self-check of the kept run `run` (kernel width `sigma`, on the
+  // current paths of `selection`): if fewer iterations recovered the
+  // synthetic copy of its result better, the run is redone with that many.
+  Candidate_run self_check(Automatic_selection<ConcurrencyTag>& selection, Candidate_run&& run, double sigma)
+  {
+    report_.self_check_errors = selection.self_check_errors(run, sigma);
+    const unsigned int k = self_check_iterations(report_.self_check_errors);
+    if(k >= run.iterations)
+      return std::move(run);
+    Candidate_run shorter = selection.run_again(sigma, k);
+    report_.iterations = k;
+    report_.stop_reason = Intrinsic_stop_reason::SELF_CHECK;
+    report_.displacement = k > 0 ? shorter.trajectory[k - 1].rms : 0.;
+    return shorter;
   }
 
   // Describes the candidates and the one kept (`best`) in the report.
