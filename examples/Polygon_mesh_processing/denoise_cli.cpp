@@ -96,7 +96,10 @@ DESCRIPTION
     at a common residual size is kept. If that result's residual shows sparse
     noise (a few vertices far off, smooth residual at the others: impulsive
     noise on exact vertices), INPUT is denoised again with the same setting,
-    only those vertices moving. If some of sigma, r, k or the noise level are
+    only those vertices moving; otherwise the setting runs on a synthetic
+    noisy copy of its result (the noise it removed, shuffled over the
+    vertices), and if fewer iterations recovered the copy better, INPUT is
+    denoised again with that many. If some of sigma, r, k or the noise level are
     given, the others follow the noise level of INPUT (estimated, or
     given with --noise-level), and unless k is given the iterations stop when
     the vertices have moved by about the noise level or the filtered normals

@@ -211,6 +211,13 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
     removed gives 0 or less), the noise is taken for impulsive: the input is
     denoised again with the kept kernel, radius and number of iterations,
     only the flagged vertices moving (`outlier_vertices` in the report).
+  - <em>Self-check.</em> Otherwise the kept result is taken for the
+    noise-free surface and given the noise it removed (the normal components
+    of its residual, shuffled over the vertices with a fixed seed); the kept
+    kernel runs on that copy for as many iterations as the candidate did. If
+    the copy came closer to the result after fewer iterations (by more than
+    2%), the input is denoised again with that many (`self_check_errors`
+    and the stop reason `SELF_CHECK` in the report).
   The report lists every candidate with its iterations, residual RMS,
   correlation, flat share and score, and the one kept; its `noise_level` is
   the kept candidate's residual RMS relative to the mean edge length. The
