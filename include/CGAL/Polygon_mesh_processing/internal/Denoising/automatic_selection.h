@@ -80,8 +80,11 @@ struct Selection_rules
   // number of iterations whose error on the synthetic copy is within this
   // fraction of the smallest. The copy takes the result for the noise-free
   // surface, which it is not, so differences this small are not evidence.
-  // On the corpus: 0 shortens 107 of its 224 inputs (51 of them worse), 0.02
-  // 65 (30 worse, by at most 7.5%), 0.05 and 0.1 too few to matter.
+  // On the corpus, in a study that checked a grid of iteration counts: 0
+  // shortened 107 of its 224 inputs (51 of them for the worse), 0.02 65 (30,
+  // by at most 7.5%), 0.05 and 0.1 too few to matter. This implementation,
+  // which checks every count, shortens 52 with 0.02 (24 for the worse, by at
+  // most 6.6%).
   static constexpr double self_check_tolerance = 0.02;
 };
 
