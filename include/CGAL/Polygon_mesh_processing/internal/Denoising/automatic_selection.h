@@ -4,10 +4,11 @@
 // The automatic mode of intrinsic_denoising() when no kernel width, radius or
 // number of iterations is given: a few candidate settings of the filter run
 // on the input, each stopped by the whiteness of its residual, and the one
-// whose residual is the most noise-like is kept. Every decision is read from
-// the residual between the input and the candidates' results
-// (residual_statistics.h), so it needs neither a noise estimate nor a
-// classification of the surface.
+// whose residual is the most noise-like is kept; its run can then be
+// shortened by a self-check on a synthetic noisy copy of its result. Every
+// decision is read from the residual between the input and the candidates'
+// results (residual_statistics.h), so it needs neither a noise estimate nor
+// a classification of the surface.
 
 #ifndef CGAL_PMP_INTERNAL_DENOISING_AUTOMATIC_SELECTION_H
 #define CGAL_PMP_INTERNAL_DENOISING_AUTOMATIC_SELECTION_H
