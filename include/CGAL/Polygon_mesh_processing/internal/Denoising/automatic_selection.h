@@ -303,13 +303,7 @@ public:
   }
 
   // Runs the candidate of kernel width `sigma` on the current paths.
-  void run(double sigma)
-  {
-    Intrinsic_kernel kernel = setup_.kernel;
-    kernel.sigma_spatial = kernel.sigma_range = sigma;
-    runs_.push_back(run_candidate<ConcurrencyTag>(setup_, kernel, adjacency_, setup_.mesh.points, fixed_,
-                                                  vertex_iterations_, guard_, mean_edge_, keep_normals_, &recovery_));
-  }
+  void run(double sigma) { runs_.push_back(run_again(sigma, Selection_rules::max_iterations)); }
 
   // Scores the candidates and returns the index of the one kept.
   std::size_t choose() { return choose_candidate(runs_); }
@@ -329,8 +323,7 @@ public:
   // flagged in `outlier` (input vertex order).
   Candidate_run run_outliers_only(double sigma, unsigned int iterations, const std::vector<char>& outlier)
   {
-    Intrinsic_kernel kernel = setup_.kernel;
-    kernel.sigma_spatial = kernel.sigma_range = sigma;
+    const Intrinsic_kernel kernel = kernel_of_width(sigma);
     std::vector<char> fixed = fixed_;
     const std::vector<char> moving = setup_.mesh.vertex_values_from_input_order(outlier);
     for(std::size_t v = 0; v < fixed.size(); ++v)
@@ -363,8 +356,7 @@ public:
   // run.iterations. The iterations kept are self_check_iterations() of it.
   std::vector<double> self_check_errors(const Candidate_run& run, double sigma)
   {
-    Intrinsic_kernel kernel = setup_.kernel;
-    kernel.sigma_spatial = kernel.sigma_range = sigma;
+    const Intrinsic_kernel kernel = kernel_of_width(sigma);
     const std::vector<Vec3> result = setup_.mesh.vertex_values_from_input_order(run.points);
     std::vector<Vec3> copy = synthetic_noisy_copy(setup_.mesh, adjacency_, setup_.mesh.points, result, fixed_);
     Face_data target, current;
@@ -387,15 +379,14 @@ public:
     return errors;
   }
 
-  // The candidate of kernel width `sigma` on the current paths run again from
-  // the input for `iterations` iterations, fewer than it ran in the selection
-  // (so its stopping rule, which did not stop it before, does not now).
+  // The candidate of kernel width `sigma` on the current paths, run from the
+  // input for at most `iterations` iterations (run_candidate()). With fewer
+  // iterations than it ran in the selection, its stopping rule, which did not
+  // stop it before, does not now: the result is that of the shorter count.
   Candidate_run run_again(double sigma, unsigned int iterations)
   {
-    Intrinsic_kernel kernel = setup_.kernel;
-    kernel.sigma_spatial = kernel.sigma_range = sigma;
-    return run_candidate<ConcurrencyTag>(setup_, kernel, adjacency_, setup_.mesh.points, fixed_, vertex_iterations_,
-                                         guard_, mean_edge_, keep_normals_, &recovery_, iterations);
+    return run_candidate<ConcurrencyTag>(setup_, kernel_of_width(sigma), adjacency_, setup_.mesh.points, fixed_,
+                                         vertex_iterations_, guard_, mean_edge_, keep_normals_, &recovery_, iterations);
   }
 
   std::vector<Candidate_run>& runs() { return runs_; }
@@ -404,6 +395,14 @@ public:
   double centroid_distance() const { return setup_.centroid_distance; }
 
 private:
+  // The setup's kernel with sigma_s = sigma_r = `sigma`.
+  Intrinsic_kernel kernel_of_width(double sigma) const
+  {
+    Intrinsic_kernel kernel = setup_.kernel;
+    kernel.sigma_spatial = kernel.sigma_range = sigma;
+    return kernel;
+  }
+
   unsigned int vertex_iterations_;
   bool keep_normals_;
   Fold_safeguard guard_;
