@@ -98,10 +98,10 @@ DESCRIPTION
     noise on exact vertices), INPUT is denoised again with the same setting,
     only those vertices moving; otherwise the setting runs on a synthetic
     noisy copy of its result (the noise it removed, shuffled over the
-    vertices), and if fewer iterations recovered the copy better, INPUT is
-    denoised again with that many. If some of sigma, r, k or the noise level are
-    given, the others follow the noise level of INPUT (estimated, or
-    given with --noise-level), and unless k is given the iterations stop when
+    vertices), and if fewer or more iterations recovered the copy better,
+    INPUT is denoised with that many. If some of sigma, r, k or the noise
+    level are given, the others follow the noise level of INPUT (estimated,
+    or given with --noise-level), and unless k is given the iterations stop when
     the vertices have moved by about the noise level or the filtered normals
     no longer change. Only the options given on the command line replace the
     automatic choices; --fixed uses the paper's fixed parameters instead (k =

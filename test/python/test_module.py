@@ -157,10 +157,13 @@ def test_the_paper_fandisk_figures(fandisk, noisy):
     assert len(report["candidates"]) == 4
     assert 0 <= report["chosen_candidate"] < 4
     assert report["iterations"] == report["candidates"][report["chosen_candidate"]]["iterations"]
-    # the self-check's angles after 0 to k iterations: every iteration brought the copy closer
+    # the self-check's angles after 0 to k iterations and on while they fall: every iteration
+    # up to k brought the copy closer, and the later ones by less than the tolerance (2%)
     checked = report["self_check_errors"]
-    assert len(checked) == report["iterations"] + 1
-    assert all(a > b for a, b in zip(checked, checked[1:]))
+    k = report["iterations"]
+    assert len(checked) > k + 1
+    assert all(a > b for a, b in zip(checked[: k + 1], checked[1 : k + 1]))
+    assert checked[k] <= 1.02 * min(checked)
     normals = report["face_normals"]
     assert normals.shape == F.shape
     assert np.allclose(np.linalg.norm(normals, axis=1), 1.0)

@@ -214,10 +214,13 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
   - <em>Self-check.</em> Otherwise the kept result is taken for the
     noise-free surface and given the noise it removed (the normal components
     of its residual, shuffled over the vertices with a fixed seed); the kept
-    kernel runs on that copy for as many iterations as the candidate did. If
-    the copy came closer to the result after fewer iterations (by more than
-    2%), the input is denoised again with that many (`self_check_errors`
-    and the stop reason `SELF_CHECK` in the report).
+    kernel runs on that copy for as many iterations as the candidate did,
+    and on while the copy keeps coming closer to the result. If the copy
+    came closer after fewer iterations, or after more (by more than 2%),
+    the input is denoised again with the count nearest to the candidate's
+    whose angle is within 2% of the smallest (`self_check_errors` and the
+    stop reason `SELF_CHECK` in the report); a longer run goes on from the
+    candidate's result.
   The report lists every candidate with its iterations, residual RMS,
   correlation, flat share and score, and the one kept; its `noise_level` is
   the kept candidate's residual RMS relative to the mean edge length. The

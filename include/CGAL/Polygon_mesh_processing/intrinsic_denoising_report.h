@@ -32,8 +32,8 @@ enum class Intrinsic_stop_reason
   /// became correlated across edges (shape, not noise, was being removed)
   RESIDUAL_CORRELATED,
   /// the automatic selection's self-check: on a synthetic noisy copy of the
-  /// kept result, fewer iterations of the kept kernel came closer to the result
-  /// (see `Intrinsic_denoising_report::self_check_errors`)
+  /// kept result, fewer or more iterations of the kept kernel came closer to
+  /// the result (see `Intrinsic_denoising_report::self_check_errors`)
   SELF_CHECK
 };
 
@@ -109,10 +109,13 @@ struct Intrinsic_denoising_report
   /// noise it removed (the normal components of the residual, shuffled over
   /// the vertices); entry k is the mean angle in degrees between the face
   /// normals of that synthetic copy after k iterations of the kept kernel and
-  /// those of the result (entry 0: the copy itself). The result kept is that
-  /// of the largest k whose entry is within 2% of the smallest; empty if the
-  /// check did not run (the kept candidate ran no iteration, or the noise was
-  /// sparse)
+  /// those of the result (entry 0: the copy itself). The copy runs at least
+  /// as many iterations as the candidate did, and on while its angle falls
+  /// and stays within 2% of the smallest. Of the counts whose entry is within
+  /// 2% of the smallest, the result kept is that of the one nearest to the
+  /// candidate's count (the largest below it or the smallest above it); empty
+  /// if the check did not run (the kept candidate ran no iteration, or the
+  /// noise was sparse)
   std::vector<double> self_check_errors;
   /// the candidates of the automatic selection (empty if it did not run:
   /// see `intrinsic_denoising()` for when it does), in the order they ran

@@ -74,7 +74,7 @@ public:
   // the paths of each radius, keeps the one chosen and describes all of them
   // in the report. The kept run is then denoised again with only its
   // outliers moving if the noise is sparse, or else checked on a synthetic
-  // copy of its result and shortened if the check says so.
+  // copy of its result and shortened or lengthened if the check says so.
   Candidate_run select_automatically()
   {
     Automatic_selection<ConcurrencyTag> selection(vertex_iterations_, prevent_folds_, keep_normals, vertex_update_);
@@ -191,13 +191,22 @@ private:
 
   // The self-check of the kept run `run` (kernel width `sigma`, on the
   // current paths of `selection`): if fewer iterations recovered the
-  // synthetic copy of its result better, the run is redone with that many.
+  // synthetic copy of its result better, the run is redone from the input
+  // with that many; if more did, it goes on from its result.
   Candidate_run self_check(Automatic_selection<ConcurrencyTag>& selection, Candidate_run&& run, double sigma)
   {
     report_.self_check_errors = selection.self_check_errors(run, sigma);
-    const unsigned int k = self_check_iterations(report_.self_check_errors);
-    if(k >= run.iterations)
+    const unsigned int k = self_check_iterations(report_.self_check_errors, run.iterations);
+    if(k == run.iterations)
       return std::move(run);
+    if(k > run.iterations)
+    {
+      Candidate_run longer = selection.run_on(std::move(run), sigma, k - run.iterations);
+      report_.iterations = k;
+      report_.stop_reason = Intrinsic_stop_reason::SELF_CHECK;
+      report_.displacement = longer.trajectory[k - 1].rms;
+      return longer;
+    }
     Candidate_run shorter = selection.run_again(sigma, k);
     report_.iterations = k;
     report_.stop_reason = Intrinsic_stop_reason::SELF_CHECK;
