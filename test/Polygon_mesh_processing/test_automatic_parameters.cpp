@@ -381,6 +381,42 @@ TEST(AutomaticParameters, SelectionFindsTheKnownBestCandidate)
   }
 }
 
+// The selection keeps the setups of the radii it ran (within its memory
+// budget) and goes back to one without building its paths again: the same
+// paths, and runs on them give the same bits as on paths built anew.
+TEST(AutomaticParameters, SelectionReusesThePathsOfARadiusRunBefore)
+{
+  Mesh noisy = fandisk();
+  PMP::add_gaussian_noise(noisy, 0.3, CGAL::parameters::random_seed(1));
+  const auto np = CGAL::parameters::default_values();
+  const D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters> maps(noisy, np);
+  const std::vector<char> constrained(num_vertices(noisy), 0);
+  const auto setup = [&](double radius) {
+    D::Setup_defaults d;
+    d.relative_radius = radius;
+    return D::make_intrinsic_setup<CGAL::Sequential_tag>(noisy, np, maps, "test",
+                                                         [&d](const D::Flat_mesh&) { return d; });
+  };
+  EXPECT_LT(D::setup_bytes(setup(6.)), D::Selection_rules::kept_setup_bytes / 4);
+  D::Automatic_selection<CGAL::Sequential_tag> selection(2, true, false), fresh(2, true, false);
+  selection.setup_paths(setup(3.), constrained);
+  selection.setup_paths(setup(6.), constrained);
+  selection.setup_paths(setup(2.), constrained);
+  EXPECT_FALSE(selection.reuse_paths(4., constrained));
+  ASSERT_TRUE(selection.reuse_paths(3., constrained));
+  EXPECT_GT(selection.centroid_distance(), 0.);
+  fresh.setup_paths(setup(3.), constrained);
+  const D::Candidate_run a = selection.run_again(0.5, 5), b = fresh.run_again(0.5, 5);
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for(std::size_t v = 0; v < a.points.size(); ++v)
+    for(int i = 0; i < 3; ++i)
+      ASSERT_EQ(a.points[v][i], b.points[v][i]);
+  EXPECT_EQ(a.relative_radius, b.relative_radius);
+  // 6d was kept as well, and 2d (the current one before) is kept in its turn
+  EXPECT_TRUE(selection.reuse_paths(6., constrained));
+  EXPECT_TRUE(selection.reuse_paths(2., constrained));
+}
+
 // The selection's result does not depend on the thread count.
 TEST(AutomaticParameters, SelectionIsThreadIndependent)
 {

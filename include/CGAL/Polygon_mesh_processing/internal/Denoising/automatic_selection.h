@@ -90,6 +90,12 @@ struct Selection_rules
   // most 6.6%); letting it lengthen runs too changes 13 more (11 for the
   // better, 2 for the worse by at most 0.5%).
   static constexpr double self_check_tolerance = 0.02;
+  // The setups (mesh copy, face data and paths) of the radii already run are
+  // kept for the kept candidate while they take at most this many bytes
+  // together, so that its paths need not be built again; past it (meshes of
+  // some hundred thousand faces) they are built again, as memory matters
+  // more there.
+  static constexpr std::size_t kept_setup_bytes = std::size_t(256) << 20;
 };
 
 // One candidate's run: its trajectory (residual statistics after each
@@ -279,10 +285,26 @@ inline unsigned int self_check_iterations(const std::vector<double>& errors, uns
   return iterations;
 }
 
+// The bytes held by the arrays of `s` (its mesh copy, face data and paths).
+inline std::size_t setup_bytes(const Intrinsic_setup& s)
+{
+  const Flat_mesh& m = s.mesh;
+  const Face_data& f = s.input_faces;
+  const Path_forest& p = s.paths;
+  return sizeof(Vec3) * (m.points.size() + f.normals.size() + f.centroids.size()) +
+         sizeof(m.triangles[0]) * m.triangles.size() +
+         sizeof(std::uint32_t) * (m.vertex_face_offsets.size() + m.vertex_faces.size() + m.input_face.size() +
+                                  m.input_vertex.size() + p.offsets.size() + p.face.size() + p.parent.size()) +
+         sizeof(double) * (f.areas.size() + p.step.size()) + sizeof(p.square_regions[0]) * p.square_regions.size() +
+         p.weighted.size();
+}
+
 // The selection's steps, in the order intrinsic_denoising() calls them: for
 // each radius of the candidates, set up the paths once on the input
 // (`setup_paths`) and run the candidates on that radius (`run`); then
-// `choose`. The setups are built from the mesh with make_intrinsic_setup().
+// `choose`, and go back to the kept candidate's paths (`reuse_paths`, or
+// `setup_paths` again if they were not kept). The setups are built from the
+// mesh with make_intrinsic_setup().
 template <typename ConcurrencyTag>
 class Automatic_selection
 {
@@ -296,17 +318,33 @@ public:
   }
 
   // Takes the setup of one radius (paths on the input mesh) and the
-  // constrained vertices in input order.
+  // constrained vertices in input order. The setup it replaces is kept
+  // within Selection_rules::kept_setup_bytes.
   void setup_paths(Intrinsic_setup&& s, const std::vector<char>& constrained_in_input_order)
   {
+    keep_current_setup();
     setup_ = std::move(s);
     if(!setup_.mesh.input_face.empty())
       reorder_vertices_for_locality(setup_.mesh);
-    fixed_ = setup_.mesh.vertex_values_from_input_order(constrained_in_input_order);
-    input_normals_ = setup_.input_faces.normals;
-    guard_.reference = guard_.enabled ? &input_normals_ : nullptr;
-    adjacency_ = vertex_adjacency(setup_.mesh);
-    mean_edge_ = mean_edge_length(setup_.mesh);
+    use_setup(constrained_in_input_order);
+  }
+
+  // Goes back to the kept setup of `relative_radius` (in d), if any; returns
+  // whether there was one (if not, the paths must be set up again).
+  bool reuse_paths(double relative_radius, const std::vector<char>& constrained_in_input_order)
+  {
+    for(std::size_t i = 0; i < kept_setups_.size(); ++i)
+      if(std::abs(kept_radius_[i] - relative_radius) <= 1e-9 * relative_radius) // radius / d, rounded
+      {
+        Intrinsic_setup s = std::move(kept_setups_[i]);
+        kept_setups_.erase(kept_setups_.begin() + std::ptrdiff_t(i));
+        kept_radius_.erase(kept_radius_.begin() + std::ptrdiff_t(i));
+        keep_current_setup();
+        setup_ = std::move(s);
+        use_setup(constrained_in_input_order);
+        return true;
+      }
+    return false;
   }
 
   // Runs the candidate of kernel width `sigma` on the current paths.
@@ -435,6 +473,40 @@ public:
   double centroid_distance() const { return setup_.centroid_distance; }
 
 private:
+  double current_relative_radius() const
+  {
+    return setup_.centroid_distance > 0. ? setup_.radius / setup_.centroid_distance : 0.;
+  }
+
+  // Moves the current setup to the kept ones if all of them then fit in
+  // Selection_rules::kept_setup_bytes, or else drops it.
+  void keep_current_setup()
+  {
+    if(setup_.mesh.points.empty())
+      return;
+    std::size_t bytes = setup_bytes(setup_);
+    for(const Intrinsic_setup& k : kept_setups_)
+      bytes += setup_bytes(k);
+    if(bytes <= Selection_rules::kept_setup_bytes)
+    {
+      kept_radius_.push_back(current_radius_);
+      kept_setups_.push_back(std::move(setup_));
+    }
+    setup_ = Intrinsic_setup();
+  }
+
+  // What the runs read of the current setup (whose vertices are in their
+  // local order).
+  void use_setup(const std::vector<char>& constrained_in_input_order)
+  {
+    current_radius_ = current_relative_radius();
+    fixed_ = setup_.mesh.vertex_values_from_input_order(constrained_in_input_order);
+    input_normals_ = setup_.input_faces.normals;
+    guard_.reference = guard_.enabled ? &input_normals_ : nullptr;
+    adjacency_ = vertex_adjacency(setup_.mesh);
+    mean_edge_ = mean_edge_length(setup_.mesh);
+  }
+
   // The setup's kernel with sigma_s = sigma_r = `sigma`.
   Intrinsic_kernel kernel_of_width(double sigma) const
   {
@@ -449,6 +521,10 @@ private:
   // scratch space only: shared by the setups, whose meshes are the same
   Least_squares_recovery recovery_;
   Intrinsic_setup setup_;
+  double current_radius_ = 0.;
+  // setups of radii run before, and their relative radii
+  std::vector<Intrinsic_setup> kept_setups_;
+  std::vector<double> kept_radius_;
   std::vector<char> fixed_;
   std::vector<Vec3> input_normals_;
   Csr adjacency_;
