@@ -809,13 +809,12 @@ int main(int argc, char** argv)
     row.fixed_Ev = PMP::vertex_position_error(f, reference);
     row.noisy_En = PMP::face_normal_error(noisy, reference);
     row.noisy_Ev = PMP::vertex_position_error(noisy, reference);
-    char shortened[48] = "";
+    char changed[48] = "";
     if(rep.stop_reason == PMP::Intrinsic_stop_reason::SELF_CHECK)
-      std::snprintf(shortened, sizeof shortened, " (self-check, from %u)",
-                    rep.candidates[rep.chosen_candidate].iterations);
+      std::snprintf(changed, sizeof changed, " (self-check, from %u)", rep.candidates[rep.chosen_candidate].iterations);
     char chosen[160];
     std::snprintf(chosen, sizeof chosen, "sigma %.2f r %.1fd k %u%s noise %.3f inlier corr %.3f outliers %zu",
-                  rep.sigma_spatial, rep.relative_neighbor_radius, rep.iterations, shortened, rep.noise_level,
+                  rep.sigma_spatial, rep.relative_neighbor_radius, rep.iterations, changed, rep.noise_level,
                   rep.inlier_residual_correlation, rep.outlier_vertices);
     row.chosen = chosen;
     const double best_classic = *std::min_element(row.ref.classic.begin(), row.ref.classic.end());
