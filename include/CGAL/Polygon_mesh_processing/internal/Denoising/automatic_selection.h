@@ -375,7 +375,7 @@ public:
       fixed[v] = fixed[v] || !moving[v];
     Candidate_run run;
     run.sigma = sigma;
-    run.relative_radius = setup_.centroid_distance > 0. ? setup_.radius / setup_.centroid_distance : 0.;
+    run.relative_radius = current_relative_radius();
     std::vector<Vec3> points = setup_.mesh.points,
                       normals = keep_normals_ ? setup_.input_faces.normals : std::vector<Vec3>();
     run.iterations = iterate_filter<ConcurrencyTag>(
@@ -473,6 +473,7 @@ public:
   double centroid_distance() const { return setup_.centroid_distance; }
 
 private:
+  // The current setup's radius in d.
   double current_relative_radius() const
   {
     return setup_.centroid_distance > 0. ? setup_.radius / setup_.centroid_distance : 0.;
@@ -489,7 +490,7 @@ private:
       bytes += setup_bytes(k);
     if(bytes <= Selection_rules::kept_setup_bytes)
     {
-      kept_radius_.push_back(current_radius_);
+      kept_radius_.push_back(current_relative_radius());
       kept_setups_.push_back(std::move(setup_));
     }
     setup_ = Intrinsic_setup();
@@ -499,7 +500,6 @@ private:
   // local order).
   void use_setup(const std::vector<char>& constrained_in_input_order)
   {
-    current_radius_ = current_relative_radius();
     fixed_ = setup_.mesh.vertex_values_from_input_order(constrained_in_input_order);
     input_normals_ = setup_.input_faces.normals;
     guard_.reference = guard_.enabled ? &input_normals_ : nullptr;
@@ -521,7 +521,6 @@ private:
   // scratch space only: shared by the setups, whose meshes are the same
   Least_squares_recovery recovery_;
   Intrinsic_setup setup_;
-  double current_radius_ = 0.;
   // setups of radii run before, and their relative radii
   std::vector<Intrinsic_setup> kept_setups_;
   std::vector<double> kept_radius_;

@@ -201,19 +201,12 @@ private:
     const unsigned int k = self_check_iterations(report_.self_check_errors, run.iterations);
     if(k == run.iterations)
       return std::move(run);
-    if(k > run.iterations)
-    {
-      Candidate_run longer = selection.run_on(std::move(run), sigma, k - run.iterations);
-      report_.iterations = k;
-      report_.stop_reason = Intrinsic_stop_reason::SELF_CHECK;
-      report_.displacement = longer.trajectory[k - 1].rms;
-      return longer;
-    }
-    Candidate_run shorter = selection.run_again(sigma, k);
+    Candidate_run changed = k > run.iterations ? selection.run_on(std::move(run), sigma, k - run.iterations)
+                                               : selection.run_again(sigma, k);
     report_.iterations = k;
     report_.stop_reason = Intrinsic_stop_reason::SELF_CHECK;
-    report_.displacement = k > 0 ? shorter.trajectory[k - 1].rms : 0.;
-    return shorter;
+    report_.displacement = k > 0 ? changed.trajectory[k - 1].rms : 0.;
+    return changed;
   }
 
   // Describes the candidates and the one kept (`best`) in the report.
