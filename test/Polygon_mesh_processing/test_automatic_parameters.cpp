@@ -317,27 +317,24 @@ Mesh sphere(int n)
 std::vector<double> candidate_errors(const Mesh& noisy, const Mesh& reference, const Mesh& selected,
                                      const PMP::Intrinsic_denoising_report& r)
 {
-  std::vector<double> errors;
-  for(std::size_t c = 0; c < r.candidates.size(); ++c)
-  {
-    const PMP::Intrinsic_candidate_report& k = r.candidates[c];
+  // `noisy` denoised with the kernel and radius of candidate `k` for `iterations`
+  const auto run = [&noisy](const PMP::Intrinsic_candidate_report& k, unsigned int iterations) {
     Mesh m = noisy;
-    if(k.iterations > 0)
+    if(iterations > 0)
       PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(
           m, CGAL::parameters::sigma_spatial(k.sigma)
                  .sigma_range(k.sigma)
                  .relative_neighbor_radius(k.relative_neighbor_radius)
-                 .number_of_iterations(k.iterations));
-    errors.push_back(PMP::face_normal_error(m, reference));
+                 .number_of_iterations(iterations));
+    return m;
+  };
+  std::vector<double> errors;
+  for(std::size_t c = 0; c < r.candidates.size(); ++c)
+  {
+    errors.push_back(PMP::face_normal_error(run(r.candidates[c], r.candidates[c].iterations), reference));
     if(c == r.chosen_candidate)
     {
-      Mesh kept = noisy;
-      if(r.iterations > 0)
-        PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(
-            kept, CGAL::parameters::sigma_spatial(k.sigma)
-                      .sigma_range(k.sigma)
-                      .relative_neighbor_radius(k.relative_neighbor_radius)
-                      .number_of_iterations(r.iterations));
+      const Mesh kept = run(r.candidates[c], r.iterations);
       for(auto v : vertices(kept))
         EXPECT_EQ(kept.point(v), selected.point(v)); // the report says what was done
     }
