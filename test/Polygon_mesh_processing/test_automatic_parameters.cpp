@@ -401,6 +401,7 @@ TEST(AutomaticParameters, SelectionReusesThePathsOfARadiusRunBefore)
   selection.setup_paths(setup(6.), constrained);
   selection.setup_paths(setup(2.), constrained);
   EXPECT_FALSE(selection.reuse_paths(4., constrained));
+  EXPECT_TRUE(selection.reuse_paths(2., constrained)); // the current one
   ASSERT_TRUE(selection.reuse_paths(3., constrained));
   EXPECT_GT(selection.centroid_distance(), 0.);
   fresh.setup_paths(setup(3.), constrained);

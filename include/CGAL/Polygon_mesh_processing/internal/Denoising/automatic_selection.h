@@ -329,12 +329,17 @@ public:
     use_setup(constrained_in_input_order);
   }
 
-  // Goes back to the kept setup of `relative_radius` (in d), if any; returns
-  // whether there was one (if not, the paths must be set up again).
+  // Makes the setup of `relative_radius` (in d) the current one if it is
+  // held: current already, or kept; returns whether it was (if not, the
+  // paths must be set up again).
   bool reuse_paths(double relative_radius, const std::vector<char>& constrained_in_input_order)
   {
+    // radius / d is rounded: equal within a relative 1e-9
+    const auto same = [relative_radius](double r) { return std::abs(r - relative_radius) <= 1e-9 * relative_radius; };
+    if(!setup_.mesh.points.empty() && same(current_relative_radius()))
+      return true;
     for(std::size_t i = 0; i < kept_setups_.size(); ++i)
-      if(std::abs(kept_radius_[i] - relative_radius) <= 1e-9 * relative_radius) // radius / d, rounded
+      if(same(kept_radius_[i]))
       {
         Intrinsic_setup s = std::move(kept_setups_[i]);
         kept_setups_.erase(kept_setups_.begin() + std::ptrdiff_t(i));

@@ -96,9 +96,7 @@ public:
       return std::move(runs[best]);
 
     const Selection_rules::Candidate& kept = Selection_rules::candidates[best];
-    // the paths of the kept candidate's radius
-    if(kept.relative_radius != Selection_rules::candidates[n - 1].relative_radius &&
-       !selection.reuse_paths(kept.relative_radius, constrained))
+    if(!selection.reuse_paths(kept.relative_radius, constrained)) // the paths of the kept candidate's radius
       selection.setup_paths(candidate_setup(kept), constrained);
     // Sparse noise (sparse_noise.h): if the kept result's residual says that
     // only a few vertices were noisy, those alone are denoised, from the
