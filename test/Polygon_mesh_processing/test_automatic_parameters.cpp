@@ -790,3 +790,19 @@ TEST(SelfCheck, LengthenedRunIsThePlainRunWithMoreIterations)
   for(auto v : vertices(m))
     ASSERT_EQ(sequential.point(v), m.point(v));
 }
+
+// The self-check lengthens a run past the candidates' own limit: on a noisy
+// sphere the kept candidate runs its 40 iterations and the copy keeps coming
+// closer after them (measured: 57 iterations kept, E_n 1.03 -> 0.92 degrees).
+TEST(SelfCheck, LengthensPastTheCandidatesLimit)
+{
+  Mesh reference;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/larger_sphere.off"), reference));
+  Mesh noisy = reference;
+  PMP::add_gaussian_noise(noisy, 0.2, CGAL::parameters::random_seed(1));
+  const auto [r, m] = self_checked_run(noisy, reference, "noisy sphere");
+  EXPECT_EQ(r.candidates[r.chosen_candidate].iterations, D::Selection_rules::max_iterations);
+  EXPECT_GT(r.iterations, D::Selection_rules::max_iterations);
+  EXPECT_LE(r.iterations, D::Selection_rules::self_check_max_iterations);
+  EXPECT_EQ(r.maximum_iterations, D::Selection_rules::self_check_max_iterations);
+}

@@ -215,7 +215,8 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
     noise-free surface and given the noise it removed (the normal components
     of its residual, shuffled over the vertices with a fixed seed); the kept
     kernel runs on that copy for as many iterations as the candidate did,
-    and on while the copy keeps coming closer to the result. If the copy
+    and on (up to 60 iterations) while the copy keeps coming closer to the
+    result. If the copy
     came closer after fewer iterations, or after more (by more than 2%),
     the input is denoised again with the count nearest to the candidate's
     whose angle is within 2% of the smallest (`self_check_errors` and the

@@ -196,6 +196,7 @@ private:
   Candidate_run self_check(Automatic_selection<ConcurrencyTag>& selection, Candidate_run&& run, double sigma)
   {
     report_.self_check_errors = selection.self_check_errors(run, sigma);
+    report_.maximum_iterations = Selection_rules::self_check_max_iterations;
     const unsigned int k = self_check_iterations(report_.self_check_errors, run.iterations);
     if(k == run.iterations)
       return std::move(run);
