@@ -164,6 +164,12 @@ def test_the_paper_fandisk_figures(fandisk, noisy):
     assert len(checked) > k + 1
     assert all(a > b for a, b in zip(checked[: k + 1], checked[1 : k + 1]))
     assert checked[k] <= 1.02 * min(checked)
+    # the copy was also denoised with the candidates' other radii, none more than 2% closer
+    radii, smallest = report["self_check_radii"], report["self_check_smallest_errors"]
+    assert np.allclose(sorted(radii), [2.0, 3.0, 6.0]) and len(smallest) == 3
+    assert radii[0] == report["relative_neighbor_radius"] == report["candidates"][report["chosen_candidate"]]["relative_neighbor_radius"]
+    assert smallest[0] == min(checked)
+    assert all(e >= 0.98 * smallest[0] for e in smallest[1:])
     normals = report["face_normals"]
     assert normals.shape == F.shape
     assert np.allclose(np.linalg.norm(normals, axis=1), 1.0)

@@ -221,7 +221,11 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
     the input is denoised again with the count nearest to the candidate's
     whose angle is within 2% of the smallest (`self_check_errors` and the
     stop reason `SELF_CHECK` in the report); a longer run goes on from the
-    candidate's result.
+    candidate's result. The kept kernel also runs on the copy with the
+    candidates' other radii (2, 3 and 6 \f$d\f$, those whose paths are still
+    held); if one brings the copy more than 2% closer than the candidate's
+    radius, the input is denoised again with it (`self_check_radii` and
+    `self_check_smallest_errors` in the report).
   The report lists every candidate with its iterations, residual RMS,
   correlation, flat share and score, and the one kept; its `noise_level` is
   the kept candidate's residual RMS relative to the mean edge length. The

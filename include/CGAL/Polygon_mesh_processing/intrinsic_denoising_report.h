@@ -32,8 +32,10 @@ enum class Intrinsic_stop_reason
   /// became correlated across edges (shape, not noise, was being removed)
   RESIDUAL_CORRELATED,
   /// the automatic selection's self-check: on a synthetic noisy copy of the
-  /// kept result, fewer or more iterations of the kept kernel came closer to
-  /// the result (see `Intrinsic_denoising_report::self_check_errors`)
+  /// kept result, fewer or more iterations of the kept kernel, or another
+  /// radius, came closer to the result (see
+  /// `Intrinsic_denoising_report::self_check_errors` and
+  /// `Intrinsic_denoising_report::self_check_radii`)
   SELF_CHECK
 };
 
@@ -117,6 +119,17 @@ struct Intrinsic_denoising_report
   /// if the check did not run (the kept candidate ran no iteration, or the
   /// noise was sparse)
   std::vector<double> self_check_errors;
+  /// with the automatic selection and dense noise: the radii (relative to
+  /// \f$d\f$) on which the kept kernel ran on the synthetic copy, the kept
+  /// candidate's first, then the candidates' other radii whose paths were
+  /// still held (each run to the first iteration that brought the copy no
+  /// closer); empty if the check did not run
+  std::vector<double> self_check_radii;
+  /// the smallest angle (degrees) on the copy for each of `self_check_radii`.
+  /// A radius other than the candidate's is used if its entry is more than
+  /// 2% below the candidate's (the lowest such); `self_check_errors` are then
+  /// its angles and `relative_neighbor_radius` says which it is
+  std::vector<double> self_check_smallest_errors;
   /// the candidates of the automatic selection (empty if it did not run:
   /// see `intrinsic_denoising()` for when it does), in the order they ran
   std::vector<Intrinsic_candidate_report> candidates;

@@ -325,6 +325,11 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
       for(std::size_t k = 0; k < r.self_check_errors.size(); ++k)
         out << (k % 10 == 0 ? "\n   " : "") << " " << k << ": " << r.self_check_errors[k];
       out << "\n";
+      // the radii tried on the copy: a later one is taken if more than 2% below the first
+      out << "smallest angle on the copy with the kept kernel and each radius (another taken if 2% below the first):";
+      for(std::size_t i = 0; i < r.self_check_radii.size() && i < r.self_check_smallest_errors.size(); ++i)
+        out << (i > 0 ? "," : "") << " " << r.self_check_radii[i] << " d: " << r.self_check_smallest_errors[i];
+      out << "\n";
     }
   }
   if(r.noise_level_estimated || r.noise_level > 0. || r.automatic_parameters)
@@ -340,8 +345,8 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
       << (r.stop_reason == Reason::NOISE_LEVEL_REACHED   ? "displacement reached the noise level"
           : r.stop_reason == Reason::CONVERGED           ? "converged"
           : r.stop_reason == Reason::RESIDUAL_CORRELATED ? "the residual became correlated across edges"
-          : r.stop_reason == Reason::SELF_CHECK          ? "the self-check chose the number of iterations"
-                                                         : "iteration limit");
+          : r.stop_reason == Reason::SELF_CHECK ? "the self-check chose the number of iterations and the radius"
+                                                : "iteration limit");
   if(r.stop_reason != Reason::ITERATION_LIMIT || r.displacement > 0.)
     out << " (RMS displacement " << r.displacement << " x mean edge length)";
   out << "\n";

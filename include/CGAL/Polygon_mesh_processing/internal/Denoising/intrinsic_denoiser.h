@@ -110,7 +110,7 @@ public:
       report_.displacement = outliers_only.trajectory.back().rms;
       return outliers_only;
     }
-    return self_check(selection, std::move(runs[best]), kept.sigma);
+    return self_check(selection, std::move(runs[best]), kept, constrained);
   }
 
   // One denoising from the input with the parameters given and, for the
@@ -189,22 +189,54 @@ private:
                                                 [&defaults](const Flat_mesh&) { return defaults; });
   }
 
-  // The self-check of the kept run `run` (kernel width `sigma`, on the
-  // current paths of `selection`): if fewer iterations recovered the
-  // synthetic copy of its result better, the run is redone from the input
-  // with that many; if more did, it goes on from its result.
-  Candidate_run self_check(Automatic_selection<ConcurrencyTag>& selection, Candidate_run&& run, double sigma)
+  // The self-check of the kept run `run` (candidate `kept`, on the current
+  // paths of `selection`): the kept kernel runs on a synthetic copy of its
+  // result on the paths of the candidate's radius and on those of each other
+  // radius still held. A radius other than the candidate's is taken if the
+  // copy came more than Selection_rules::self_check_tolerance closer to the
+  // result with it; then, or if another number of iterations recovered the
+  // copy better, the run is redone from the input (or, with the candidate's
+  // radius and more iterations, goes on from its result).
+  Candidate_run self_check(Automatic_selection<ConcurrencyTag>& selection, Candidate_run&& run,
+                           const Selection_rules::Candidate& kept, const std::vector<char>& constrained)
   {
-    report_.self_check_errors = selection.self_check_errors(run, sigma);
+    const std::vector<Vec3> copy = selection.synthetic_copy(run);
+    std::vector<double> errors = selection.self_check_errors(run, kept.sigma, copy);
+    const auto smallest = [](const std::vector<double>& e) { return *std::min_element(e.begin(), e.end()); };
     report_.maximum_iterations = Selection_rules::self_check_max_iterations;
-    const unsigned int k = self_check_iterations(report_.self_check_errors, run.iterations);
-    if(k == run.iterations)
+    report_.self_check_radii.assign(1, run.relative_radius);
+    report_.self_check_smallest_errors.assign(1, smallest(errors));
+    double radius = run.relative_radius;
+    double limit = smallest(errors) * (1. - Selection_rules::self_check_tolerance);
+    for(double r : selection.held_radii())
+    {
+      if(same_relative_radius(r, run.relative_radius) || !selection.reuse_paths(r, constrained))
+        continue;
+      std::vector<double> e = selection.self_check_errors(run, kept.sigma, copy, true);
+      report_.self_check_radii.push_back(r);
+      report_.self_check_smallest_errors.push_back(smallest(e));
+      if(smallest(e) < limit)
+      {
+        limit = smallest(e);
+        radius = r;
+        errors = std::move(e);
+      }
+    }
+    if(!selection.reuse_paths(radius, constrained))
+      selection.setup_paths(candidate_setup({kept.sigma, radius}), constrained);
+    const unsigned int k = self_check_iterations(errors, run.iterations);
+    report_.self_check_errors = std::move(errors);
+    const bool same_radius = radius == run.relative_radius;
+    if(same_radius && k == run.iterations)
       return std::move(run);
-    Candidate_run changed = k > run.iterations ? selection.run_on(std::move(run), sigma, k - run.iterations)
-                                               : selection.run_again(sigma, k);
+    Candidate_run changed = !same_radius         ? selection.run_from_input(kept.sigma, k)
+                            : k > run.iterations ? selection.run_on(std::move(run), kept.sigma, k - run.iterations)
+                                                 : selection.run_again(kept.sigma, k);
     report_.iterations = k;
     report_.stop_reason = Intrinsic_stop_reason::SELF_CHECK;
     report_.displacement = k > 0 ? changed.trajectory[k - 1].rms : 0.;
+    report_.relative_neighbor_radius = radius;
+    report_.neighbor_radius = radius * selection.centroid_distance();
     return changed;
   }
 
