@@ -345,8 +345,8 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
       << (r.stop_reason == Reason::NOISE_LEVEL_REACHED   ? "displacement reached the noise level"
           : r.stop_reason == Reason::CONVERGED           ? "converged"
           : r.stop_reason == Reason::RESIDUAL_CORRELATED ? "the residual became correlated across edges"
-          : r.stop_reason == Reason::SELF_CHECK ? "the self-check chose the number of iterations and the radius"
-                                                : "iteration limit");
+          : r.stop_reason == Reason::SELF_CHECK          ? "the self-check chose the number of iterations or the radius"
+                                                         : "iteration limit");
   if(r.stop_reason != Reason::ITERATION_LIMIT || r.displacement > 0.)
     out << " (RMS displacement " << r.displacement << " x mean edge length)";
   out << "\n";

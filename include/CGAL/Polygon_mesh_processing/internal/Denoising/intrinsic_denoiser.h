@@ -213,11 +213,12 @@ private:
       if(same_relative_radius(r, run.relative_radius) || !selection.reuse_paths(r, constrained))
         continue;
       std::vector<double> e = selection.self_check_errors(run, kept.sigma, copy, true);
+      const double e_min = smallest(e);
       report_.self_check_radii.push_back(r);
-      report_.self_check_smallest_errors.push_back(smallest(e));
-      if(smallest(e) < limit)
+      report_.self_check_smallest_errors.push_back(e_min);
+      if(e_min < limit)
       {
-        limit = smallest(e);
+        limit = e_min;
         radius = r;
         errors = std::move(e);
       }
