@@ -277,6 +277,25 @@ TEST(IntrinsicDenoising, FaceNormalMapReceivesUnitFilteredNormals)
   }
 }
 
+// No iteration: nothing is filtered, the mesh stays and the face normal map
+// receives the input's own face normals (this read past an empty array).
+TEST(IntrinsicDenoising, ZeroIterationsWithAFaceNormalMapKeepsTheMeshAndItsNormals)
+{
+  for(bool automatic : {true, false})
+  {
+    Mesh mesh = denoising_test::cube<Mesh>(6);
+    PMP::add_gaussian_noise(mesh, 0.2, CGAL::parameters::random_seed(4));
+    const auto before = positions(mesh);
+    auto fnm = mesh.add_property_map<Mesh::Face_index, K::Vector_3>("f:filtered", CGAL::NULL_VECTOR).first;
+    const PMP::Intrinsic_denoising_report report = PMP::intrinsic_denoising(
+        mesh, CGAL::parameters::face_normal_map(fnm).number_of_iterations(0).automatic_parameters(automatic));
+    EXPECT_EQ(report.iterations, 0u);
+    EXPECT_EQ(max_distance(before, positions(mesh)), 0.);
+    for(auto f : faces(mesh))
+      EXPECT_NEAR(get(fnm, f) * PMP::compute_face_normal(f, mesh), 1., 1e-12);
+  }
+}
+
 TEST(IntrinsicFilterFaceNormals, OnePassOnACubeKeepsAxisNormalsAndTheMesh)
 {
   Mesh mesh = denoising_test::cube<Mesh>(5);

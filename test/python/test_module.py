@@ -214,6 +214,17 @@ def test_thread_count_does_not_change_the_result(noisy):
     assert np.array_equal(a, b)
 
 
+@pytest.mark.parametrize("automatic", [True, False])
+def test_zero_iterations_return_the_input_and_its_face_normals(noisy, automatic):
+    N, F = noisy
+    V, report = dn.denoise(N, F, number_of_iterations=0, automatic_parameters=automatic)
+    assert report["iterations"] == 0
+    assert np.array_equal(V, N)
+    n = np.cross(N[F[:, 1]] - N[F[:, 0]], N[F[:, 2]] - N[F[:, 0]])
+    n /= np.linalg.norm(n, axis=1)[:, None]
+    assert np.allclose(report["face_normals"], n, atol=1e-12)
+
+
 def test_constrained_vertices_stay(noisy):
     N, F = noisy
     constrained = np.zeros(len(N), dtype=bool)

@@ -157,7 +157,15 @@ public:
     Candidate_run r;
     r.points = s.mesh.vertex_values_in_input_order(points);
     if constexpr(keep_normals)
+    {
+      if(last_filtered.empty()) // no iteration ran: nothing filtered, the input's face normals
+      {
+        Face_data input_faces;
+        compute_face_data<ConcurrencyTag>(s.mesh, points, input_faces);
+        last_filtered = std::move(input_faces.normals);
+      }
       r.normals = s.mesh.in_input_order(last_filtered);
+    }
     return r;
   }
 
