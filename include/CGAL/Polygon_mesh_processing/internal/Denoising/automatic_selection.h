@@ -514,12 +514,14 @@ public:
   {
     std::vector<Vec3> points = setup_.mesh.vertex_values_from_input_order(run.points);
     Face_data current;
-    compute_face_data<ConcurrencyTag>(setup_.mesh, points, current);
+    const bool no_normals = keep_normals_ && run.normals.empty();
+    if(more > 0 || no_normals)
+      compute_face_data<ConcurrencyTag>(setup_.mesh, points, current);
     if(more == 0)
     {
       // nothing to run: a run that has not run either (from the input) has
       // as "last filtered normals" the face normals of its points
-      if(keep_normals_ && run.normals.empty())
+      if(no_normals)
         run.normals = setup_.mesh.in_input_order(current.normals);
       return std::move(run);
     }
