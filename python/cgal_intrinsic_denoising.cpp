@@ -379,6 +379,7 @@ py::dict report_dict(const PMP::Intrinsic_denoising_report& r)
   d["chosen_candidate"] = r.chosen_candidate;
   d["inlier_residual_correlation"] = r.inlier_residual_correlation;
   d["outlier_vertices"] = r.outlier_vertices;
+  d["relaxed_vertices"] = r.relaxed_vertices;
   d["self_check_errors"] = r.self_check_errors;
   d["self_check_radii"] = r.self_check_radii;
   d["self_check_smallest_errors"] = r.self_check_smallest_errors;

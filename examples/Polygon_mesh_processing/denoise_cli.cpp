@@ -99,7 +99,11 @@ DESCRIPTION
     only those vertices moving; otherwise the setting runs on a synthetic
     noisy copy of its result (the noise it removed, shuffled over the
     vertices), and if fewer or more iterations recovered the copy better,
-    INPUT is denoised with that many. If some of sigma, r, k or the noise
+    INPUT is denoised with that many. Last, as the vertex update (eq. 10)
+    moves vertices along the normals only, each vertex that moved is relaxed
+    along the surface (toward the centroid of its faces, in the directions
+    its faces leave free: none at a corner, along the crease on an edge), by
+    at most half as far as the denoising moved it. If some of sigma, r, k or the noise
     level are given, the others follow the noise level of INPUT (estimated,
     or given with --noise-level), and unless k is given the iterations stop when
     the vertices have moved by about the noise level or the filtered normals

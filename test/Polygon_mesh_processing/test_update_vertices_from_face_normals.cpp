@@ -8,9 +8,12 @@
 #include <CGAL/Polygon_mesh_processing/bilateral_normal_denoising.h>
 #include <CGAL/Polygon_mesh_processing/fast_feature_preserving_denoising.h>
 #include <CGAL/Polygon_mesh_processing/guided_normal_denoising.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/tangential_relaxation.h>
 #include <CGAL/Polygon_mesh_processing/update_vertices_from_face_normals.h>
 
 #include <denoising_support/synthetic_meshes.h>
+
+#include "flat_setup.h"
 
 #include <gtest/gtest.h>
 
@@ -19,6 +22,8 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <iostream>
+#include <random>
 #include <utility>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -343,4 +348,129 @@ TEST(UpdateVerticesLeastSquares, ClassicNormalFiltersTakeTheSameParameter)
     EXPECT_TRUE(finite) << method.first;
     EXPECT_LT(e_global, e_noisy) << method.first;
   }
+}
+
+// ---- Tangential relaxation (the automatic mode's last step) ---------------
+
+namespace {
+
+// A plane grid whose interior vertices are moved along the plane by a seeded
+// jitter (`jittered`, as the denoiser might leave them) and, for the input,
+// also off it by `lift` (what the denoiser removed).
+struct Jittered_plane
+{
+  D::Flat_mesh m;
+  std::vector<D::Vec3> exact, jittered, input;
+  double h = 0.;
+  Jittered_plane(int n, double jitter, double lift) : m(Flat_setup<>(denoising_test::plane_grid<Mesh>(n)).m)
+  {
+    exact = m.points;
+    h = 1. / n;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-1., 1.);
+    jittered = exact;
+    input = exact;
+    for(std::size_t v = 0; v < exact.size(); ++v)
+    {
+      const D::Vec3 p = exact[v];
+      const bool interior = p[0] > 1e-9 && p[0] < 1. - 1e-9 && p[1] > 1e-9 && p[1] < 1. - 1e-9;
+      const double dx = u(rng), dy = u(rng), dz = u(rng) < 0. ? -1. : 1.;
+      if(!interior)
+        continue;
+      jittered[v] = {p[0] + jitter * h * dx, p[1] + jitter * h * dy, 0.};
+      input[v] = {jittered[v][0], jittered[v][1], dz * lift * h};
+    }
+  }
+  double mean_distance_to_exact(const std::vector<D::Vec3>& p) const
+  {
+    double s = 0.;
+    for(std::size_t v = 0; v < p.size(); ++v)
+      s += std::sqrt(D::squared_norm(p[v] - exact[v]));
+    return s / double(p.size());
+  }
+};
+
+} // namespace
+
+// Vertices moved along a plane come back toward an even sampling; they stay
+// in the plane, border and held vertices stay, and none ends farther from
+// where it started than half of its distance to the input.
+TEST(TangentialRelaxation, EvensOutAJitteredPlaneWithinItsCap)
+{
+  const Jittered_plane c(12, 0.25, 0.4);
+  std::vector<D::Vec3> p = c.jittered;
+  std::vector<char> held(p.size(), 0);
+  const std::size_t pinned = 12 * 13 / 2 + 6; // an interior vertex
+  held[pinned] = 1;
+  D::Fold_safeguard guard;
+  D::Face_data input_faces;
+  D::compute_face_data<CGAL::Sequential_tag>(c.m, c.input, input_faces);
+  guard.reference = &input_faces.normals;
+  const std::size_t moved = D::relax_tangentially<CGAL::Sequential_tag>(c.m, c.input, p, held, guard);
+  EXPECT_GT(moved, 0u);
+  const double before = c.mean_distance_to_exact(c.jittered), after = c.mean_distance_to_exact(p);
+  std::cout << "jittered plane: mean distance to the even grid " << before << " -> " << after << " (h " << c.h
+            << "), " << moved << " vertices moved\n";
+  EXPECT_LT(after, 0.8 * before);
+  for(std::size_t v = 0; v < p.size(); ++v)
+  {
+    EXPECT_EQ(p[v][2], 0.) << v;
+    const double cap = 0.5 * std::sqrt(D::squared_norm(c.input[v] - c.jittered[v]));
+    EXPECT_LE(std::sqrt(D::squared_norm(p[v] - c.jittered[v])), cap * (1. + 1e-12)) << v;
+    if(c.input[v] == c.jittered[v]) // border: nothing removed there, nothing moves
+      EXPECT_EQ(p[v], c.jittered[v]) << v;
+  }
+  EXPECT_EQ(p[pinned], c.jittered[pinned]);
+  // the same for any number of threads
+  std::vector<D::Vec3> q = c.jittered;
+  D::relax_tangentially<CGAL::Parallel_if_available_tag>(c.m, c.input, q, held, guard);
+  for(std::size_t v = 0; v < p.size(); ++v)
+    ASSERT_EQ(p[v], q[v]) << v;
+}
+
+// On a cube, a vertex of a face moves in its face's plane, one of an edge
+// along the edge, a corner not at all: the faces around a vertex leave it
+// only the directions along which they are flat.
+TEST(TangentialRelaxation, CreaseVerticesMoveAlongTheCreaseAndCornersStay)
+{
+  const D::Flat_mesh m = Flat_setup<>(denoising_test::cube<Mesh>(6)).m;
+  const std::vector<D::Vec3> exact = m.points;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1., 1.);
+  std::vector<D::Vec3> start = exact, input = exact;
+  const auto on_side = [](double x) { return std::abs(std::abs(x) - 1.) < 1e-9; };
+  for(std::size_t v = 0; v < exact.size(); ++v)
+  {
+    D::Vec3 p = exact[v];
+    for(int i = 0; i < 3; ++i)
+      if(!on_side(p[i])) // a free coordinate: jitter it along the surface
+        p[i] += 0.05 * u(rng);
+    start[v] = p;
+    input[v] = p + D::Vec3{0.1, 0.1, 0.1}; // the denoiser moved every vertex by about 0.17
+  }
+  std::vector<D::Vec3> p = start;
+  D::Fold_safeguard guard;
+  guard.enabled = false;
+  const std::size_t moved = D::relax_tangentially<CGAL::Sequential_tag>(m, input, p, std::vector<char>(), guard);
+  EXPECT_GT(moved, 0u);
+  std::size_t corners = 0, creases = 0;
+  for(std::size_t v = 0; v < p.size(); ++v)
+  {
+    int fixed_coordinates = 0;
+    for(int i = 0; i < 3; ++i)
+      if(on_side(exact[v][i]))
+      {
+        ++fixed_coordinates;
+        EXPECT_NEAR(p[v][i], exact[v][i], 1e-12) << v; // stays on its face (faces)
+      }
+    if(fixed_coordinates == 3)
+    {
+      ++corners;
+      EXPECT_EQ(p[v], start[v]) << v;
+    }
+    if(fixed_coordinates == 2)
+      ++creases;
+  }
+  EXPECT_EQ(corners, 8u);
+  EXPECT_GT(creases, 0u);
 }

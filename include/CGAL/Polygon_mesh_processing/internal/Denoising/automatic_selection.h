@@ -19,6 +19,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/residual_statistics.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/sparse_noise.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/tangential_relaxation.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
 
 #include <algorithm>
@@ -389,6 +390,24 @@ public:
                                             setup_.mesh.vertex_values_from_input_order(run.points), fixed_);
     t.outlier = setup_.mesh.vertex_values_in_input_order(t.outlier);
     return t;
+  }
+
+  // Relaxes the result of `run` along the surface (relax_tangentially()) on
+  // the current setup; with a non-empty `moving` (input vertex order), only
+  // the vertices flagged in it may move. Returns the number that moved.
+  std::size_t relax(Candidate_run& run, const std::vector<char>& moving = std::vector<char>())
+  {
+    std::vector<Vec3> points = setup_.mesh.vertex_values_from_input_order(run.points);
+    std::vector<char> held = fixed_;
+    if(!moving.empty())
+    {
+      const std::vector<char> m = setup_.mesh.vertex_values_from_input_order(moving);
+      for(std::size_t v = 0; v < held.size(); ++v)
+        held[v] = held[v] || !m[v];
+    }
+    const std::size_t moved = relax_tangentially<ConcurrencyTag>(setup_.mesh, setup_.mesh.points, points, held, guard_);
+    run.points = setup_.mesh.vertex_values_in_input_order(points);
+    return moved;
   }
 
   // Denoises the input again with the kernel of width `sigma` on the current

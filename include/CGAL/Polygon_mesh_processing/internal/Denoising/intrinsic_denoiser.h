@@ -108,9 +108,12 @@ public:
       Candidate_run outliers_only = selection.run_outliers_only(kept.sigma, report_.iterations, test.outlier);
       report_.outlier_vertices = test.outliers;
       report_.displacement = outliers_only.trajectory.back().rms;
+      report_.relaxed_vertices = selection.relax(outliers_only, test.outlier);
       return outliers_only;
     }
-    return self_check(selection, std::move(runs[best]), kept, constrained);
+    Candidate_run result = self_check(selection, std::move(runs[best]), kept, constrained);
+    report_.relaxed_vertices = selection.relax(result);
+    return result;
   }
 
   // One denoising from the input with the parameters given and, for the
