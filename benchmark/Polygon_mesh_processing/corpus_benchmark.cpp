@@ -814,8 +814,8 @@ int main(int argc, char** argv)
       std::snprintf(changed, sizeof changed, " (self-check, from %u)", rep.candidates[rep.chosen_candidate].iterations);
     char chosen[192];
     std::snprintf(chosen, sizeof chosen,
-                  "sigma %.2f r %.1fd k %u%s noise %.3f inlier corr %.3f outliers %zu relaxed %zu",
-                  rep.sigma_spatial, rep.relative_neighbor_radius, rep.iterations, changed, rep.noise_level,
+                  "sigma %.2f r %.1fd k %u%s noise %.3f inlier corr %.3f outliers %zu relaxed %zu", rep.sigma_spatial,
+                  rep.relative_neighbor_radius, rep.iterations, changed, rep.noise_level,
                   rep.inlier_residual_correlation, rep.outlier_vertices, rep.relaxed_vertices);
     row.chosen = chosen;
     const double best_classic = *std::min_element(row.ref.classic.begin(), row.ref.classic.end());

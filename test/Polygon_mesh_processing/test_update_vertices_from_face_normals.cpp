@@ -21,8 +21,8 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <map>
 #include <iostream>
+#include <map>
 #include <random>
 #include <utility>
 
@@ -409,8 +409,8 @@ TEST(TangentialRelaxation, EvensOutAJitteredPlaneWithinItsCap)
   const std::size_t moved = D::relax_tangentially<CGAL::Sequential_tag>(c.m, c.input, p, held, guard);
   EXPECT_GT(moved, 0u);
   const double before = c.mean_distance_to_exact(c.jittered), after = c.mean_distance_to_exact(p);
-  std::cout << "jittered plane: mean distance to the even grid " << before << " -> " << after << " (h " << c.h
-            << "), " << moved << " vertices moved\n";
+  std::cout << "jittered plane: mean distance to the even grid " << before << " -> " << after << " (h " << c.h << "), "
+            << moved << " vertices moved\n";
   EXPECT_LT(after, 0.8 * before);
   for(std::size_t v = 0; v < p.size(); ++v)
   {
