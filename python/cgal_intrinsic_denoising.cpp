@@ -256,7 +256,7 @@ struct Intrinsic_options
   bool automatic_parameters = true;
   std::optional<double> noise_level, sigma_spatial, sigma_range, neighbor_radius, relative_neighbor_radius;
   std::optional<long long> number_of_iterations;
-  std::optional<bool> stop_when_converged;
+  std::optional<bool> stop_when_converged, relax_along_surface;
   long long vertex_iterations = 2, geodesic_patch_rings = 0;
   std::string vertex_update = "paper", path_strategy = "square_pattern";
   double spatial_exponent = 1., range_exponent = 1.;
@@ -416,6 +416,11 @@ py::tuple denoise(const py::handle& V, const py::handle& F, const py::object& co
       progress(done, total);
   };
   const bool stop = o.stop_when_converged ? *o.stop_when_converged : o.automatic_parameters && !o.number_of_iterations;
+  // the library's default of relax_along_surface: when the automatic selection runs
+  const bool relax = o.relax_along_surface
+                         ? *o.relax_along_surface
+                         : o.automatic_parameters && stop && !o.number_of_iterations && !o.sigma_spatial &&
+                               !o.sigma_range && !o.neighbor_radius && !o.relative_neighbor_radius && !o.noise_level;
   const auto np = CGAL::parameters::vertex_iterations(vertex_iterations)
                       .spatial_exponent(o.spatial_exponent)
                       .range_exponent(o.range_exponent)
@@ -427,6 +432,7 @@ py::tuple denoise(const py::handle& V, const py::handle& F, const py::object& co
                       .vertex_update(update)
                       .automatic_parameters(o.automatic_parameters)
                       .stop_when_converged(stop)
+                      .relax_along_surface(relax)
                       .progress_callback(callback)
                       .vertex_is_constrained_map(constrained_vertices)
                       .face_normal_map(normals);
@@ -556,8 +562,8 @@ PYBIND11_MODULE(cgal_intrinsic_denoising, m)
          std::optional<double> sigma_range, double spatial_exponent, double range_exponent,
          std::optional<double> neighbor_radius, std::optional<double> relative_neighbor_radius,
          const std::string& path_strategy, bool use_step_length, long long geodesic_patch_rings,
-         bool include_self_weight, bool prevent_folds, const py::object& constrained, const py::object& progress,
-         long long threads) {
+         bool include_self_weight, bool prevent_folds, std::optional<bool> relax_along_surface,
+         const py::object& constrained, const py::object& progress, long long threads) {
         Intrinsic_options o;
         o.automatic_parameters = automatic_parameters;
         o.noise_level = noise_level;
@@ -576,6 +582,7 @@ PYBIND11_MODULE(cgal_intrinsic_denoising, m)
         o.geodesic_patch_rings = geodesic_patch_rings;
         o.include_self_weight = include_self_weight;
         o.prevent_folds = prevent_folds;
+        o.relax_along_surface = relax_along_surface;
         return denoise(V, F, constrained, progress, threads, o);
       },
       py::arg("V"), py::arg("F"), py::kw_only(), py::arg("automatic_parameters") = true,
@@ -585,8 +592,8 @@ PYBIND11_MODULE(cgal_intrinsic_denoising, m)
       py::arg("range_exponent") = 1., py::arg("neighbor_radius") = py::none(),
       py::arg("relative_neighbor_radius") = py::none(), py::arg("path_strategy") = "square_pattern",
       py::arg("use_step_length") = false, py::arg("geodesic_patch_rings") = 0, py::arg("include_self_weight") = false,
-      py::arg("prevent_folds") = true, py::arg("constrained") = py::none(), py::arg("progress") = py::none(),
-      py::arg("threads") = 0,
+      py::arg("prevent_folds") = true, py::arg("relax_along_surface") = py::none(), py::arg("constrained") = py::none(),
+      py::arg("progress") = py::none(), py::arg("threads") = 0,
       R"(Denoises the triangle mesh (V, F) with intrinsic_denoising() (Algorithm 1 of "Mesh denoising via
 generalized intrinsic filter on 2D manifold") and returns (V_out, report).
 
@@ -598,7 +605,9 @@ normals of the last pass, (m, 3)) and 'duplicated_vertices' (vertices the soup r
 Keywords are the named parameters of intrinsic_denoising(), with its defaults; None means "not given"
 (the automatic mode chooses it). vertex_update: 'paper' (eq. 10) or 'least_squares'. path_strategy:
 'square_pattern', 'geodesic', 'direct' or 'shortest_graph_path'. stop_when_converged: default on in the
-automatic mode unless number_of_iterations is given. constrained: boolean array, one entry per vertex,
+automatic mode unless number_of_iterations is given. relax_along_surface: default on when the automatic
+selection runs (none of the sigmas, radii, number_of_iterations or noise_level given, stopping rule on);
+report['relaxed_vertices'] counts the vertices it moved. constrained: boolean array, one entry per vertex,
 True for vertices that never move. progress: callable progress(done, total) after each iteration.
 threads: 0 for all, or a limit (the result does not depend on it). Ctrl-C interrupts after the
 current iteration. Bad input raises ValueError or TypeError naming the problem.)");

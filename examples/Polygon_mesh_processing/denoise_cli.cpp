@@ -65,7 +65,7 @@ struct Settings
   bool fixed = false, progress = false;
   std::string stop_when_converged;
   double spatial_exponent = 1., range_exponent = 1.;
-  std::string paths = "square", threads = "all", vertex_update = "paper";
+  std::string paths = "square", threads = "all", vertex_update = "paper", relax;
   bool step_length = false, self_weight = false, no_fold_guard = false, quiet = false;
   double noise = 0., impulsive = 1.;
 };
@@ -227,6 +227,10 @@ po::options_description make_options(Settings& s)
        "over the whole mesh)")
     ("no-fold-guard", po::bool_switch(&s.no_fold_guard),
        "apply eq. 10 exactly, as the paper does, without the safeguard against folded triangles")
+    ("relax", po::value(&s.relax)->value_name("yes|no"),
+       "relax the result along the surface after the last iteration (default: yes when the automatic selection "
+       "runs, that is without --fixed, --iterations, the sigmas, the radius, --noise-level or "
+       "--stop-when-converged no; no otherwise)")
     ("threads", po::value(&s.threads)->value_name("1|all")->default_value(s.threads),
        "1: sequential; all: parallel with TBB when available (the result is the same)")
     ("noise", po::value(&s.noise)->value_name("SIGMA_E"),
@@ -306,7 +310,7 @@ std::string check_method_options(const Method_settings& m, const po::variables_m
     for(const char* name :
         {"iterations", "vertex-iterations", "sigma-spatial", "sigma-range", "radius", "relative-radius",
          "spatial-exponent", "range-exponent", "paths", "geodesic-rings", "step-length", "self-weight", "no-fold-guard",
-         "vertex-update", "fixed", "noise-level", "stop-when-converged"})
+         "vertex-update", "fixed", "noise-level", "stop-when-converged", "relax"})
       if(vm.count(name) && !vm[name].defaulted())
         return std::string("--") + name + " applies to --method intrinsic only";
   if(vm.count("report") && denoise_file::extension(m.report) != "html")
@@ -468,6 +472,8 @@ int main(int argc, char** argv)
     return fail(exit_usage, "--paths must be square, direct, graph or geodesic, not '" + s.paths + "'");
   if(s.vertex_update != "paper" && s.vertex_update != "least-squares")
     return fail(exit_usage, "--vertex-update must be paper or least-squares, not '" + s.vertex_update + "'");
+  if(vm.count("relax") && s.relax != "yes" && s.relax != "no")
+    return fail(exit_usage, "--relax must be yes or no, not '" + s.relax + "'");
   if(s.threads != "1" && s.threads != "all")
     return fail(exit_usage, "--threads must be 1 or all, not '" + s.threads + "'");
   if(!positive_finite(s.sigma_spatial) || !positive_finite(s.sigma_range) || !positive_finite(s.spatial_exponent) ||
@@ -576,6 +582,11 @@ int main(int argc, char** argv)
   auto progress = [&bar](std::size_t done, std::size_t total) { bar(done, total); };
   const bool stop =
       vm.count("stop-when-converged") ? s.stop_when_converged == "yes" : !s.fixed && !vm.count("iterations");
+  // the library's default of relax_along_surface: when the automatic selection runs
+  const bool relax = vm.count("relax") ? s.relax == "yes"
+                                       : !s.fixed && stop && !vm.count("iterations") && !vm.count("sigma-spatial") &&
+                                             !vm.count("sigma-range") && !vm.count("radius") &&
+                                             !vm.count("relative-radius") && !vm.count("noise-level");
   const auto np =
       CGAL::parameters::vertex_iterations(static_cast<unsigned int>(s.vertex_iterations))
           .spatial_exponent(s.spatial_exponent)
@@ -588,6 +599,7 @@ int main(int argc, char** argv)
           .vertex_update(s.vertex_update == "paper" ? PMP::Vertex_update::PAPER : PMP::Vertex_update::LEAST_SQUARES)
           .automatic_parameters(!s.fixed)
           .stop_when_converged(stop)
+          .relax_along_surface(relax)
           .progress_callback(progress);
   Mesh denoised = input;
   Intrinsic_run run{denoised, s, vm, PMP::Intrinsic_denoising_report(), std::string()};

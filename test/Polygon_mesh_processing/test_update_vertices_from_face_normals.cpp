@@ -418,7 +418,9 @@ TEST(TangentialRelaxation, EvensOutAJitteredPlaneWithinItsCap)
     const double cap = 0.5 * std::sqrt(D::squared_norm(c.input[v] - c.jittered[v]));
     EXPECT_LE(std::sqrt(D::squared_norm(p[v] - c.jittered[v])), cap * (1. + 1e-12)) << v;
     if(c.input[v] == c.jittered[v]) // border: nothing removed there, nothing moves
+    {
       EXPECT_EQ(p[v], c.jittered[v]) << v;
+    }
   }
   EXPECT_EQ(p[pinned], c.jittered[pinned]);
   // the same for any number of threads

@@ -225,6 +225,25 @@ def test_zero_iterations_return_the_input_and_its_face_normals(noisy, automatic)
     assert np.allclose(report["face_normals"], n, atol=1e-12)
 
 
+def test_relax_along_surface_defaults_to_the_automatic_selection_and_can_be_given(noisy):
+    N, F = noisy
+    V, report = dn.denoise(N, F)
+    assert report["relaxed_vertices"] > 0
+    U, off = dn.denoise(N, F, relax_along_surface=False)
+    assert off["relaxed_vertices"] == 0
+    # the relaxation moves exactly the vertices it counts, each by at most
+    # half its distance from the input
+    moved = np.any(V != U, axis=1)
+    assert moved.sum() == report["relaxed_vertices"]
+    assert np.all(np.linalg.norm(V - U, axis=1) <= 0.5 * np.linalg.norm(U - N, axis=1) * (1 + 1e-9))
+    _, partial = dn.denoise(N, F, number_of_iterations=3)
+    assert partial["relaxed_vertices"] == 0
+    _, fixed = dn.denoise(N, F, automatic_parameters=False, number_of_iterations=3)
+    assert fixed["relaxed_vertices"] == 0
+    _, asked = dn.denoise(N, F, automatic_parameters=False, number_of_iterations=3, relax_along_surface=True)
+    assert asked["relaxed_vertices"] > 0
+
+
 def test_constrained_vertices_stay(noisy):
     N, F = noisy
     constrained = np.zeros(len(N), dtype=bool)

@@ -315,6 +315,17 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
       \cgalParamType{`CGAL::Polygon_mesh_processing::Vertex_update`}
       \cgalParamDefault{`Vertex_update::PAPER`}
     \cgalParamNEnd
+    \cgalParamNBegin{relax_along_surface}
+      \cgalParamDescription{if `true`, after the last iteration each vertex is moved along the surface only (eq. 10
+                            moves it along normals only): 5 steps toward the area-weighted centroid of its faces'
+                            centroids, in the directions its faces leave free (none at a corner, along the crease on
+                            an edge), at most half as far from the denoised position as the denoising moved it from
+                            the input; border and constrained vertices stay, the fold safeguard applies, with sparse
+                            noise only the outliers move. The report's `relaxed_vertices` counts the vertices moved.}
+      \cgalParamType{bool}
+      \cgalParamDefault{`true` when the automatic selection runs (automatic mode, stopping rule on, none of \f$\sigma_s\f$,
+                        \f$\sigma_r\f$, the radius, `number_of_iterations` or `noise_level` given), else `false`}
+    \cgalParamNEnd
     \cgalParamNBegin{sigma_spatial, sigma_range, spatial_exponent, range_exponent, neighbor_radius, relative_neighbor_radius, path_strategy, use_step_length, geodesic_patch_rings, include_self_weight}
       \cgalParamDescription{as for `intrinsic_filter_face_normals()`, except that in the automatic mode the defaults
                             of \f$\sigma_s\f$, \f$\sigma_r\f$ and the radius are derived from the noise level}

@@ -106,10 +106,10 @@ struct Intrinsic_denoising_report
   /// (impulsive) noise, which alone were then denoised, all others staying in
   /// place; 0 if the noise was taken for dense (every vertex denoised)
   std::size_t outlier_vertices = 0;
-  /// with the automatic selection: the number of vertices the tangential
-  /// relaxation moved after the last iteration (along the surface only, each
-  /// by at most half as far as the denoising moved it; the outliers alone
-  /// with sparse noise)
+  /// the number of vertices the relaxation along the surface moved after the
+  /// last iteration (along the surface only, each by at most half as far as
+  /// the denoising moved it; the outliers alone with sparse noise); 0 if it
+  /// did not run (see the named parameter `relax_along_surface`)
   std::size_t relaxed_vertices = 0;
   /// with the automatic selection and dense noise: the self-check of the kept
   /// candidate. Its result is taken for the noise-free surface and given the

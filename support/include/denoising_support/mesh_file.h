@@ -350,7 +350,7 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
   if(r.stop_reason != Reason::ITERATION_LIMIT || r.displacement > 0.)
     out << " (RMS displacement " << r.displacement << " x mean edge length)";
   out << "\n";
-  if(!r.candidates.empty())
+  if(!r.candidates.empty() || r.relaxed_vertices > 0)
     out << "tangential relaxation: " << r.relaxed_vertices
         << " vertices moved along the surface after the last iteration (each by at most half its denoising "
         << "displacement)\n";

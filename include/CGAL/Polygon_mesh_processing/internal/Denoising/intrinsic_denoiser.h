@@ -16,6 +16,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/named_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/tangential_relaxation.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising_report.h>
 
@@ -56,6 +57,7 @@ public:
         choose_parameter(get_parameter(np, internal_np::vertex_iterations), Intrinsic_defaults::vertex_iterations);
     vertex_update_ = choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER);
     prevent_folds_ = choose_parameter(get_parameter(np, internal_np::prevent_folds), true);
+    relax_ = choose_parameter(get_parameter(np, internal_np::relax_along_surface), uses_automatic_selection());
   }
 
   // Whether the automatic selection runs: only when the kernel, the radius,
@@ -108,11 +110,13 @@ public:
       Candidate_run outliers_only = selection.run_outliers_only(kept.sigma, report_.iterations, test.outlier);
       report_.outlier_vertices = test.outliers;
       report_.displacement = outliers_only.trajectory.back().rms;
-      report_.relaxed_vertices = selection.relax(outliers_only, test.outlier);
+      if(relax_)
+        report_.relaxed_vertices = selection.relax(outliers_only, test.outlier);
       return outliers_only;
     }
     Candidate_run result = self_check(selection, std::move(runs[best]), kept, constrained);
-    report_.relaxed_vertices = selection.relax(result);
+    if(relax_)
+      report_.relaxed_vertices = selection.relax(result);
     return result;
   }
 
@@ -139,7 +143,7 @@ public:
     guard.reference = &input_normals;
 
     std::vector<Vec3>& points = s.mesh.points;
-    const std::vector<Vec3> input_points = stop_rule_ ? points : std::vector<Vec3>();
+    const std::vector<Vec3> input_points = stop_rule_ || relax_ ? points : std::vector<Vec3>();
     std::vector<Vec3> previous, last_filtered;
     report_.stop_reason = Intrinsic_stop_reason::ITERATION_LIMIT;
     iterate_filter<ConcurrencyTag>(
@@ -157,6 +161,8 @@ public:
         &recovery);
     if(stop_rule_)
       report_.displacement = relative_rms_displacement(s.mesh, points, input_points, report_.mean_edge_length);
+    if(relax_)
+      report_.relaxed_vertices = relax_tangentially<ConcurrencyTag>(s.mesh, input_points, points, fixed, guard);
     Candidate_run r;
     r.points = s.mesh.vertex_values_in_input_order(points);
     if constexpr(keep_normals)
@@ -362,6 +368,7 @@ private:
   unsigned int vertex_iterations_ = 0;
   Vertex_update vertex_update_ = Vertex_update::PAPER;
   bool prevent_folds_ = true;
+  bool relax_ = false;
   Automatic_choice choice_;
 };
 

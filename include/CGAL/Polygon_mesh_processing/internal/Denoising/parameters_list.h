@@ -39,6 +39,9 @@ CGAL_add_named_parameter(geodesic_patch_rings_t, geodesic_patch_rings, geodesic_
 CGAL_add_named_parameter(prevent_folds_t, prevent_folds, prevent_folds)
 // how the vertices follow the filtered normals (Vertex_update)
 CGAL_add_named_parameter(vertex_update_t, vertex_update, vertex_update)
+// whether the result is relaxed along the surface after the last iteration
+// (default: when the automatic selection runs)
+CGAL_add_named_parameter(relax_along_surface_t, relax_along_surface, relax_along_surface)
 // classic methods
 // T of Sun et al. 2007: faces whose normals make n_i . n_j <= T get no weight
 CGAL_add_named_parameter(normal_threshold_t, normal_threshold, normal_threshold)
