@@ -47,6 +47,23 @@ const Mesh& fandisk()
   return m;
 }
 
+// Checks that `relaxed` is `plain` (a run without the relaxation along the
+// surface, from `noisy`) after that relaxation: exactly `moved` vertices
+// differ, none by more than half its distance from the input.
+void expect_relaxation_of(const Mesh& noisy, const Mesh& plain, const Mesh& relaxed, std::size_t moved,
+                          const char* name = "")
+{
+  std::size_t different = 0, beyond_cap = 0;
+  for(auto v : vertices(noisy))
+  {
+    different += relaxed.point(v) == plain.point(v) ? 0 : 1;
+    const double cap = 0.5 * std::sqrt(CGAL::squared_distance(noisy.point(v), plain.point(v)));
+    beyond_cap += std::sqrt(CGAL::squared_distance(relaxed.point(v), plain.point(v))) <= cap * (1. + 1e-9) ? 0 : 1;
+  }
+  EXPECT_EQ(different, moved) << name;
+  EXPECT_EQ(beyond_cap, 0u) << name;
+}
+
 double estimate(const Mesh& m)
 {
   const D::Flat_mesh flat =
@@ -340,15 +357,7 @@ std::vector<double> candidate_errors(const Mesh& noisy, const Mesh& reference, c
       // the report says what was done: that run, then the tangential
       // relaxation, which moves `relaxed_vertices` vertices, none by more
       // than half its distance from the input
-      const Mesh kept = run(reported, r.iterations);
-      std::size_t different = 0;
-      for(auto v : vertices(kept))
-      {
-        different += kept.point(v) == selected.point(v) ? 0 : 1;
-        EXPECT_LE(std::sqrt(CGAL::squared_distance(kept.point(v), selected.point(v))),
-                  0.5 * std::sqrt(CGAL::squared_distance(kept.point(v), noisy.point(v))) * (1. + 1e-9));
-      }
-      EXPECT_EQ(different, r.relaxed_vertices);
+      expect_relaxation_of(noisy, run(reported, r.iterations), selected, r.relaxed_vertices);
     }
   }
   return errors;
@@ -762,15 +771,7 @@ std::pair<PMP::Intrinsic_denoising_report, Mesh> self_checked_run(const Mesh& no
                       .relative_neighbor_radius(r.relative_neighbor_radius)
                       .stop_when_converged(false);
   PMP::intrinsic_denoising(plain, np.number_of_iterations(r.iterations));
-  std::size_t different = 0, beyond_cap = 0;
-  for(auto v : vertices(m))
-  {
-    different += m.point(v) == plain.point(v) ? 0 : 1;
-    const double cap = 0.5 * std::sqrt(CGAL::squared_distance(noisy.point(v), plain.point(v)));
-    beyond_cap += std::sqrt(CGAL::squared_distance(m.point(v), plain.point(v))) <= cap * (1. + 1e-9) ? 0 : 1;
-  }
-  EXPECT_EQ(different, r.relaxed_vertices) << name;
-  EXPECT_EQ(beyond_cap, 0u) << name;
+  expect_relaxation_of(noisy, plain, m, r.relaxed_vertices, name);
   PMP::intrinsic_denoising(candidate, np.number_of_iterations(ran));
   std::cout << name << ": E_n noisy " << PMP::face_normal_error(noisy, reference) << ", " << ran << " iterations "
             << PMP::face_normal_error(candidate, reference) << ", self-checked " << r.iterations << " "
@@ -890,14 +891,7 @@ TEST(RelaxAlongSurface, OnWithTheAutomaticSelectionOffOtherwiseAndWhenGiven)
   EXPECT_GT(a.relaxed_vertices, 0u);
   EXPECT_EQ(u.relaxed_vertices, 0u);
   EXPECT_EQ(a.iterations, u.iterations);
-  std::size_t different = 0;
-  for(auto v : vertices(noisy))
-  {
-    different += automatic.point(v) == unrelaxed.point(v) ? 0 : 1;
-    EXPECT_LE(std::sqrt(CGAL::squared_distance(automatic.point(v), unrelaxed.point(v))),
-              0.5 * std::sqrt(CGAL::squared_distance(unrelaxed.point(v), noisy.point(v))) * (1. + 1e-9));
-  }
-  EXPECT_EQ(different, a.relaxed_vertices);
+  expect_relaxation_of(noisy, unrelaxed, automatic, a.relaxed_vertices);
 
   Mesh scan = fandisk();
   PMP::add_depth_scan_noise(scan, 0.3, CGAL::parameters::random_seed(1));
