@@ -489,13 +489,14 @@ unsigned int vertex_steps(long long v, const char* fname)
 // The parameters the two normal filters ZFAT11 and ZDZ15 share.
 template <typename Map>
 auto normal_filter_np(const Map& map, long long iterations, double sigma_spatial, double sigma_range,
-                      long long vertex_iterations, PMP::Vertex_update update, const char* fname)
+                      long long vertex_iterations, PMP::Vertex_update update, bool relax, const char* fname)
 {
   return classic_np(map, iterations, fname)
       .sigma_spatial(sigma_spatial)
       .sigma_range(sigma_range)
       .vertex_iterations(vertex_steps(vertex_iterations, fname))
-      .vertex_update(update);
+      .vertex_update(update)
+      .relax_along_surface(relax);
 }
 
 // One of the noise models on a copy of (V, F): `noise(mesh, np)` with the
@@ -648,7 +649,7 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       "fast_feature_preserving_denoising",
       [](const py::handle& V, const py::handle& F, double normal_threshold, bool use_vertex_neighborhood,
          long long number_of_iterations, long long vertex_iterations, const std::string& vertex_update,
-         const py::object& constrained, long long threads) {
+         bool relax_along_surface, const py::object& constrained, long long threads) {
         const char* fname = "fast_feature_preserving_denoising()";
         const PMP::Vertex_update update = read_vertex_update(vertex_update);
         return run_on_copy(V, F, constrained, threads, [&](Mesh& mesh, const auto& map) {
@@ -657,30 +658,32 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
                                                           .normal_threshold(normal_threshold)
                                                           .use_vertex_neighborhood(use_vertex_neighborhood)
                                                           .vertex_iterations(vertex_steps(vertex_iterations, fname))
-                                                          .vertex_update(update));
+                                                          .vertex_update(update)
+                                                          .relax_along_surface(relax_along_surface));
         });
       },
       py::arg("V"), py::arg("F"), py::kw_only(), py::arg("normal_threshold") = 0.5,
       py::arg("use_vertex_neighborhood") = true, py::arg("number_of_iterations") = 20,
-      py::arg("vertex_iterations") = 10, py::arg("vertex_update") = "paper", py::arg("constrained") = py::none(),
-      py::arg("threads") = 0,
+      py::arg("vertex_iterations") = 10, py::arg("vertex_update") = "paper", py::arg("relax_along_surface") = false,
+      py::arg("constrained") = py::none(), py::arg("threads") = 0,
       "SRML07, the fast and effective feature-preserving denoising of Sun et al. 2007 "
-      "(fast_feature_preserving_denoising()). Returns the new V.");
+      "(fast_feature_preserving_denoising()); relax_along_surface: relax the result along the surface as "
+      "denoise() does. Returns the new V.");
 
   m.def(
       "bilateral_normal_denoising",
       [](const py::handle& V, const py::handle& F, double sigma_spatial, double sigma_range,
          long long number_of_iterations, long long vertex_iterations, const std::string& vertex_update,
          std::optional<double> neighbor_radius, std::optional<double> relative_neighbor_radius,
-         const py::object& constrained, long long threads) {
+         bool relax_along_surface, const py::object& constrained, long long threads) {
         const char* fname = "bilateral_normal_denoising()";
         const PMP::Vertex_update update = read_vertex_update(vertex_update);
         if(neighbor_radius && relative_neighbor_radius)
           throw py::value_error("bilateral_normal_denoising(): give neighbor_radius or relative_neighbor_radius, "
                                 "not both");
         return run_on_copy(V, F, constrained, threads, [&](Mesh& mesh, const auto& map) {
-          const auto np =
-              normal_filter_np(map, number_of_iterations, sigma_spatial, sigma_range, vertex_iterations, update, fname);
+          const auto np = normal_filter_np(map, number_of_iterations, sigma_spatial, sigma_range, vertex_iterations,
+                                           update, relax_along_surface, fname);
           if(neighbor_radius)
             PMP::bilateral_normal_denoising<Tag>(mesh, np.neighbor_radius(*neighbor_radius));
           else if(relative_neighbor_radius)
@@ -692,9 +695,10 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       py::arg("V"), py::arg("F"), py::kw_only(), py::arg("sigma_spatial") = 1., py::arg("sigma_range") = 0.35,
       py::arg("number_of_iterations") = 20, py::arg("vertex_iterations") = 10, py::arg("vertex_update") = "paper",
       py::arg("neighbor_radius") = py::none(), py::arg("relative_neighbor_radius") = py::none(),
-      py::arg("constrained") = py::none(), py::arg("threads") = 0,
+      py::arg("relax_along_surface") = false, py::arg("constrained") = py::none(), py::arg("threads") = 0,
       "ZFAT11, the bilateral normal filter of Zheng et al. 2011 (bilateral_normal_denoising()); without a radius the "
-      "neighbours are the faces sharing a vertex. Returns the new V.");
+      "neighbours are the faces sharing a vertex; relax_along_surface: relax the result along the surface as "
+      "denoise() does. Returns the new V.");
 
   m.def(
       "l0_denoising",
@@ -714,13 +718,13 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       "guided_normal_denoising",
       [](const py::handle& V, const py::handle& F, double sigma_spatial, double sigma_range,
          std::optional<double> neighbor_radius, double relative_neighbor_radius, long long number_of_iterations,
-         long long vertex_iterations, const std::string& vertex_update, const py::object& constrained,
-         long long threads) {
+         long long vertex_iterations, const std::string& vertex_update, bool relax_along_surface,
+         const py::object& constrained, long long threads) {
         const char* fname = "guided_normal_denoising()";
         const PMP::Vertex_update update = read_vertex_update(vertex_update);
         return run_on_copy(V, F, constrained, threads, [&](Mesh& mesh, const auto& map) {
-          const auto np =
-              normal_filter_np(map, number_of_iterations, sigma_spatial, sigma_range, vertex_iterations, update, fname);
+          const auto np = normal_filter_np(map, number_of_iterations, sigma_spatial, sigma_range, vertex_iterations,
+                                           update, relax_along_surface, fname);
           if(neighbor_radius)
             PMP::guided_normal_denoising<Tag>(mesh, np.neighbor_radius(*neighbor_radius));
           else
@@ -730,9 +734,10 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       py::arg("V"), py::arg("F"), py::kw_only(), py::arg("sigma_spatial") = 1., py::arg("sigma_range") = 0.35,
       py::arg("neighbor_radius") = py::none(), py::arg("relative_neighbor_radius") = 2.,
       py::arg("number_of_iterations") = 20, py::arg("vertex_iterations") = 10, py::arg("vertex_update") = "paper",
-      py::arg("constrained") = py::none(), py::arg("threads") = 0,
+      py::arg("relax_along_surface") = false, py::arg("constrained") = py::none(), py::arg("threads") = 0,
       "ZDZ15, guided mesh normal filtering of Zhang et al. 2015 (guided_normal_denoising()); neighbor_radius, if "
-      "given, replaces relative_neighbor_radius. Returns the new V.");
+      "given, replaces relative_neighbor_radius; relax_along_surface: relax the result along the surface as "
+      "denoise() does. Returns the new V.");
 
   m.def(
       "add_gaussian_noise",

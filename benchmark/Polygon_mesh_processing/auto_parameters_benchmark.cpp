@@ -255,7 +255,7 @@ static std::vector<double> classic_errors(const Input& in)
   for(const auto& method : denoising_support::classic_methods<CGAL::Sequential_tag, Mesh>())
   {
     Mesh m = in.noisy;
-    method.run(m);
+    method.run(m, false);
     errors.push_back(PMP::face_normal_error(m, in.reference));
   }
   return errors;

@@ -210,7 +210,7 @@ std::vector<double> classic_errors(const Mesh& noisy, const Mesh& reference)
   for(const auto& method : classic_methods())
   {
     Mesh m = noisy;
-    method.run(m);
+    method.run(m, false);
     errors.push_back(PMP::face_normal_error(m, reference));
   }
   return errors;
@@ -626,7 +626,7 @@ void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool 
       for(const auto& c : classic_methods())
         if(baselines)
         {
-          const Outcome r = outcome(noisy, reference, c.run);
+          const Outcome r = outcome(noisy, reference, [&c](Mesh& m) { c.run(m, false); });
           if(r.En < best_classic.En)
             best_classic = r;
         }

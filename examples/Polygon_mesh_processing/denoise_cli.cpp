@@ -123,7 +123,9 @@ DESCRIPTION
     (non_iterative_denoising), SRML07 (fast_feature_preserving_denoising),
     ZFAT11 (bilateral_normal_denoising), HS13 (l0_denoising) or ZDZ15
     (guided_normal_denoising); the options of the intrinsic filter (-k, -v,
-    sigmas, radii, exponents, paths) then do not apply and are refused.
+    sigmas, radii, exponents, paths) then do not apply and are refused, but
+    --relax yes ends the three normal-filtering methods (SRML07, ZFAT11,
+    ZDZ15) with the same relaxation along the surface.
 
     With --report FILE.html, a self-contained comparison page is written: the
     input (noisy input with --noise), the result and, with --reference, the
@@ -230,7 +232,7 @@ po::options_description make_options(Settings& s)
     ("relax", po::value(&s.relax)->value_name("yes|no"),
        "relax the result along the surface after the last iteration (default: yes when the automatic selection "
        "runs, that is without --fixed, --iterations, the sigmas, the radius, --noise-level or "
-       "--stop-when-converged no; no otherwise)")
+       "--stop-when-converged no; no otherwise); also for --method SRML07, ZFAT11 and ZDZ15 (default no)")
     ("threads", po::value(&s.threads)->value_name("1|all")->default_value(s.threads),
        "1: sequential; all: parallel with TBB when available (the result is the same)")
     ("noise", po::value(&s.noise)->value_name("SIGMA_E"),
@@ -307,25 +309,31 @@ std::string check_method_options(const Method_settings& m, const po::variables_m
   if(m.method != "intrinsic" && !denoising_support::find_classic_method<CGAL::Sequential_tag, Mesh>(m.method))
     return "--method must be intrinsic, FDC03, JDD03, SRML07, ZFAT11, HS13 or ZDZ15, not '" + m.method + "'";
   if(m.method != "intrinsic")
+  {
     for(const char* name :
         {"iterations", "vertex-iterations", "sigma-spatial", "sigma-range", "radius", "relative-radius",
          "spatial-exponent", "range-exponent", "paths", "geodesic-rings", "step-length", "self-weight", "no-fold-guard",
-         "vertex-update", "fixed", "noise-level", "stop-when-converged", "relax"})
+         "vertex-update", "fixed", "noise-level", "stop-when-converged"})
       if(vm.count(name) && !vm[name].defaulted())
         return std::string("--") + name + " applies to --method intrinsic only";
+    if(vm.count("relax") &&
+       !denoising_support::find_classic_method<CGAL::Sequential_tag, Mesh>(m.method)->filters_normals)
+      return "--relax applies to --method intrinsic, SRML07, ZFAT11 and ZDZ15 only";
+  }
   if(vm.count("report") && denoise_file::extension(m.report) != "html")
     return "--report needs a .html file name, not '" + m.report + "'";
   return std::string();
 }
 
-// Runs a classic method with its defaults; on failure `mesh` may be changed
-// and a one-line message is returned.
+// Runs a classic method with its defaults (and, with `relax`, the
+// relaxation along the surface); on failure `mesh` may be changed and a
+// one-line message is returned.
 template <typename ConcurrencyTag>
-std::string run_classic(Mesh& mesh, const std::string& method)
+std::string run_classic(Mesh& mesh, const std::string& method, bool relax)
 {
   try
   {
-    denoising_support::find_classic_method<ConcurrencyTag, Mesh>(method)->run(mesh);
+    denoising_support::find_classic_method<ConcurrencyTag, Mesh>(method)->run(mesh, relax);
   }
   catch(const std::exception& e)
   {
@@ -605,8 +613,11 @@ int main(int argc, char** argv)
   Intrinsic_run run{denoised, s, vm, PMP::Intrinsic_denoising_report(), std::string()};
   const auto start = std::chrono::steady_clock::now();
   if(method.method != "intrinsic")
-    problem = s.threads == "1" ? run_classic<CGAL::Sequential_tag>(denoised, method.method)
-                               : run_classic<CGAL::Parallel_if_available_tag>(denoised, method.method);
+  {
+    const bool relax_classic = vm.count("relax") && s.relax == "yes";
+    problem = s.threads == "1" ? run_classic<CGAL::Sequential_tag>(denoised, method.method, relax_classic)
+                               : run_classic<CGAL::Parallel_if_available_tag>(denoised, method.method, relax_classic);
+  }
   else
   {
 #ifdef CGAL_LINKED_WITH_TBB
@@ -622,8 +633,9 @@ int main(int argc, char** argv)
     return fail(exit_input, problem);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if(talk && method.method != "intrinsic")
-    std::cout << "denoised in " << seconds << " s: " << method.method << " with its defaults, threads " << s.threads
-              << "\n";
+    std::cout << "denoised in " << seconds << " s: " << method.method << " with its defaults"
+              << (vm.count("relax") && s.relax == "yes" ? ", relaxed along the surface" : "") << ", threads "
+              << s.threads << "\n";
   else if(talk)
   {
     std::cout << "denoised in " << seconds << " s: " << s.paths << " paths, n = " << s.spatial_exponent

@@ -244,6 +244,17 @@ def test_relax_along_surface_defaults_to_the_automatic_selection_and_can_be_give
     assert asked["relaxed_vertices"] > 0
 
 
+def test_normal_filtering_classics_relax_along_the_surface_when_asked(noisy):
+    N, F = noisy
+    for method in (dn.fast_feature_preserving_denoising, dn.bilateral_normal_denoising, dn.guided_normal_denoising):
+        plain = method(N, F)
+        assert np.array_equal(method(N, F, relax_along_surface=False), plain)
+        relaxed = method(N, F, relax_along_surface=True)
+        # some vertices move, none by more than half its distance from the input
+        assert np.any(relaxed != plain)
+        assert np.all(np.linalg.norm(relaxed - plain, axis=1) <= 0.5 * np.linalg.norm(plain - N, axis=1) * (1 + 1e-9))
+
+
 def test_constrained_vertices_stay(noisy):
     N, F = noisy
     constrained = np.zeros(len(N), dtype=bool)

@@ -104,6 +104,14 @@ void thresholded_normal_pass(const Csr& neighbors, const std::vector<Vec3>& n, d
       \cgalParamType{`CGAL::Polygon_mesh_processing::Vertex_update`}
       \cgalParamDefault{`Vertex_update::PAPER`}
     \cgalParamNEnd
+    \cgalParamNBegin{relax_along_surface}
+      \cgalParamDescription{if `true`, after the last iteration each vertex is moved along the surface only, as in
+                            `intrinsic_denoising()`: toward the centroid of its faces in the directions they leave
+                            free, at most half as far from the result as the denoising moved it from the input;
+                            border and constrained vertices stay, and no face turns over against the result}
+      \cgalParamType{bool}
+      \cgalParamDefault{`false` (the method as published)}
+    \cgalParamNEnd
     \cgalParamNBegin{face_normal_map}
       \cgalParamDescription{if given, receives the filtered normals of the last pass}
       \cgalParamType{a model of `WritablePropertyMap` with face descriptors as keys and `GeomTraits::Vector_3` as values}

@@ -24,7 +24,11 @@ struct Classic_method
 {
   const char* name;     // the citation key of Table 1
   const char* function; // the package's function
-  void (*run)(Mesh&);   // the function at its defaults
+  // the function at its defaults; with `relax`, a normal-filtering method
+  // (filters_normals) ends with the relaxation along the surface
+  // (named parameter relax_along_surface), the others ignore it
+  void (*run)(Mesh&, bool relax);
+  bool filters_normals;
 };
 
 // In the order of the paper's Table 1.
@@ -33,13 +37,26 @@ const std::array<Classic_method<Mesh>, 6>& classic_methods()
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   static const std::array<Classic_method<Mesh>, 6> list = {{
-      {"FDC03", "bilateral_mesh_denoising", [](Mesh& m) { PMP::bilateral_mesh_denoising<ConcurrencyTag>(m); }},
-      {"JDD03", "non_iterative_denoising", [](Mesh& m) { PMP::non_iterative_denoising<ConcurrencyTag>(m); }},
+      {"FDC03", "bilateral_mesh_denoising", [](Mesh& m, bool) { PMP::bilateral_mesh_denoising<ConcurrencyTag>(m); },
+       false},
+      {"JDD03", "non_iterative_denoising", [](Mesh& m, bool) { PMP::non_iterative_denoising<ConcurrencyTag>(m); },
+       false},
       {"SRML07", "fast_feature_preserving_denoising",
-       [](Mesh& m) { PMP::fast_feature_preserving_denoising<ConcurrencyTag>(m); }},
-      {"ZFAT11", "bilateral_normal_denoising", [](Mesh& m) { PMP::bilateral_normal_denoising<ConcurrencyTag>(m); }},
-      {"HS13", "l0_denoising", [](Mesh& m) { PMP::l0_denoising<ConcurrencyTag>(m); }},
-      {"ZDZ15", "guided_normal_denoising", [](Mesh& m) { PMP::guided_normal_denoising<ConcurrencyTag>(m); }},
+       [](Mesh& m, bool relax) {
+         PMP::fast_feature_preserving_denoising<ConcurrencyTag>(m, CGAL::parameters::relax_along_surface(relax));
+       },
+       true},
+      {"ZFAT11", "bilateral_normal_denoising",
+       [](Mesh& m, bool relax) {
+         PMP::bilateral_normal_denoising<ConcurrencyTag>(m, CGAL::parameters::relax_along_surface(relax));
+       },
+       true},
+      {"HS13", "l0_denoising", [](Mesh& m, bool) { PMP::l0_denoising<ConcurrencyTag>(m); }, false},
+      {"ZDZ15", "guided_normal_denoising",
+       [](Mesh& m, bool relax) {
+         PMP::guided_normal_denoising<ConcurrencyTag>(m, CGAL::parameters::relax_along_surface(relax));
+       },
+       true},
   }};
   return list;
 }

@@ -5,7 +5,9 @@
 // every one starts from, topological face neighbourhoods, the faces around a
 // vertex within a radius, and the loop "filter the face normals, then move
 // the vertices (eq. 10)" common to the normal-filtering methods (Sun et al.
-// 2007, Zheng et al. 2011, Zhang et al. 2015).
+// 2007, Zheng et al. 2011, Zhang et al. 2015), optionally followed by the
+// same relaxation along the surface as the intrinsic filter's
+// (relax_tangentially()).
 
 #ifndef CGAL_PMP_INTERNAL_DENOISING_CLASSIC_METHODS_H
 #define CGAL_PMP_INTERNAL_DENOISING_CLASSIC_METHODS_H
@@ -15,10 +17,12 @@
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/path_forest.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/path_weights.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/tangential_relaxation.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -144,21 +148,42 @@ std::vector<Vec3> normal_filtering_scheme(Flat_mesh& mesh, const std::vector<cha
   return filtered;
 }
 
+// Relaxes `points`, the result of a classic normal-filtering run on `mesh`
+// from `input`, along the surface (relax_tangentially()). These methods have
+// no fold safeguard of their own; the relaxation's steps go through it with
+// the result's face normals as the reference, so no face turns over against
+// the result. Returns the number of vertices moved.
+template <typename ConcurrencyTag>
+std::size_t relax_classic_result(const Flat_mesh& mesh, const std::vector<Vec3>& input, std::vector<Vec3>& points,
+                                 const std::vector<char>& fixed)
+{
+  Face_data result;
+  compute_face_data<ConcurrencyTag>(mesh, points, result);
+  Fold_safeguard guard;
+  guard.reference = &result.normals;
+  return relax_tangentially<ConcurrencyTag>(mesh, input, points, fixed, guard);
+}
+
 // Runs a normal-filtering denoiser on `setup.mesh` with its filter
 // `filter(current_face_data, filtered_normals)` (normal_filtering_scheme()):
-// number_of_iterations, vertex_iterations and vertex_update are read from
-// `np` (defaults 20, 10 and eq. 10); then writes the points to the user's
-// mesh (once) and, if asked for, the filtered normals of the last pass.
+// number_of_iterations, vertex_iterations, vertex_update and
+// relax_along_surface are read from `np` (defaults 20, 10, eq. 10 and no
+// relaxation); then writes the points to the user's mesh (once) and, if
+// asked for, the filtered normals of the last pass.
 template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters, typename Filter>
 void run_normal_filtering(TriangleMesh& tmesh, const NamedParameters& np,
                           Classic_setup<TriangleMesh, NamedParameters>& setup, Filter& filter)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
+  const bool relax = choose_parameter(get_parameter(np, internal_np::relax_along_surface), false);
+  const std::vector<Vec3> input = relax ? setup.mesh.points : std::vector<Vec3>();
   const std::vector<Vec3> filtered = normal_filtering_scheme<ConcurrencyTag>(
       setup.mesh, setup.fixed, choose_parameter(get_parameter(np, internal_np::number_of_iterations), 20u),
       choose_parameter(get_parameter(np, internal_np::vertex_iterations), 10u), filter,
       choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER));
+  if(relax)
+    relax_classic_result<ConcurrencyTag>(setup.mesh, input, setup.mesh.points, setup.fixed);
   setup.write_points(tmesh);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
     if(!filtered.empty())
