@@ -135,6 +135,17 @@ Mesh plane_grid(int n, double size = 1.)
   return s.to_mesh<Mesh>();
 }
 
+// A plane of `columns` x `rows` cells of width 1 and height `height`, each
+// cell split along a diagonal: with a small height, two slivers per cell
+// (aspect ratio about 1 / height), as in strip tessellations of CAD exports.
+template <typename Mesh>
+Mesh sliver_plane_grid(int columns, int rows, double height)
+{
+  Soup s;
+  s.add_subdivided_quad({0., 0., 0.}, {double(columns), 0., 0.}, {0., rows * height, 0.}, columns, rows, false);
+  return s.to_mesh<Mesh>();
+}
+
 // Cube [-1, 1]^3, each side n x n cells.
 template <typename Mesh>
 Mesh cube(int n)
