@@ -5,7 +5,9 @@
 #   1. table1_benchmark --models fandisk,prism --meshes --report: every method's
 #      best output (grid search by E_n, seeded noise), its per-face normal
 #      error, and one comparison page per model;
-#   2. geodesic_vs_square_pattern on fandisk: the two path strategies' results;
+#   2. geodesic_vs_square_pattern on fandisk: the two path strategies' results,
+#      and the command-line tool's comparison pages of a sliver plane
+#      (scripts/sliver_plane.py) at two noise levels;
 #   3. tools/render/render.mjs draws each page's meshes with three.js in
 #      headless chromium into a contact sheet, flat shaded, and again with the
 #      per-face normal error heat map.
@@ -15,7 +17,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_render_deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j2 --target table1_benchmark geodesic_vs_square_pattern
+cmake --build build -j2 --target table1_benchmark geodesic_vs_square_pattern denoise
 work=build/figures
 fig=doc/Polygon_mesh_processing/fig
 mkdir -p "$work" "$fig"
@@ -31,6 +33,14 @@ for model in fandisk prism; do
 done
 $render "$work/reports/geodesic_vs_square.html" --tile 240 --cols 4 --out "$fig/geodesic_vs_square.png"
 $render "$work/reports/geodesic_vs_square.html" --tile 240 --cols 4 --heat --out "$fig/geodesic_vs_square_error.png"
+# a strip tessellation of a plane (slivers of aspect ratio 20) at sigma_E 0.05
+# and 0.3, automatic mode: noisy, result, reference, per-face normal error
+python3 scripts/sliver_plane.py "$work/sliver_plane.off"
+for s in 0.05 0.3; do
+  build/examples/Polygon_mesh_processing/denoise "$work/sliver_plane.off" --noise $s \
+    --reference "$work/sliver_plane.off" --report "$work/reports/sliver_$s.html" -o "$work/sliver_denoised_$s.off"
+  $render "$work/reports/sliver_$s.html" --tile 240 --cols 3 --heat --out "$fig/sliver_plane_${s}_error.png"
+done
 cp "$work/reports/prism.html" doc/Polygon_mesh_processing/sample_report.html
 cp "$work/reports/prism.csv" doc/Polygon_mesh_processing/sample_report.csv
 ls -l "$fig" doc/Polygon_mesh_processing/sample_report.html

@@ -443,9 +443,8 @@ double rms_height(const Mesh& mesh)
 // (about 0.7 times a sliver's height: many slivers are tilted by tens of
 // degrees, E_n about 32 degrees): the automatic mode brings it back flat, with
 // no face turned over against the input, and the same result for any number
-// of threads. (At sigma_E 0.3 the noise is four times the slivers' height and
-// a third of them are turned over in the input; the manual gives the figures
-// there.)
+// of threads. (At sigma_E 0.3, four times the slivers' height, it is not
+// brought back: the manual gives the figures.)
 TEST(IrregularMeshes, ScrambledSliverPatchComesBackFlat)
 {
   const Mesh plane = denoising_test::sliver_plane_grid<Mesh>(20, 200, 0.05);
