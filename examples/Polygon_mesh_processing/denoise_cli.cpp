@@ -611,10 +611,10 @@ int main(int argc, char** argv)
           .progress_callback(progress);
   Mesh denoised = input;
   Intrinsic_run run{denoised, s, vm, PMP::Intrinsic_denoising_report(), std::string()};
+  const bool relax_classic = vm.count("relax") && s.relax == "yes"; // with a classic method: off by default
   const auto start = std::chrono::steady_clock::now();
   if(method.method != "intrinsic")
   {
-    const bool relax_classic = vm.count("relax") && s.relax == "yes";
     problem = s.threads == "1" ? run_classic<CGAL::Sequential_tag>(denoised, method.method, relax_classic)
                                : run_classic<CGAL::Parallel_if_available_tag>(denoised, method.method, relax_classic);
   }
@@ -634,8 +634,7 @@ int main(int argc, char** argv)
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if(talk && method.method != "intrinsic")
     std::cout << "denoised in " << seconds << " s: " << method.method << " with its defaults"
-              << (vm.count("relax") && s.relax == "yes" ? ", relaxed along the surface" : "") << ", threads "
-              << s.threads << "\n";
+              << (relax_classic ? ", relaxed along the surface" : "") << ", threads " << s.threads << "\n";
   else if(talk)
   {
     std::cout << "denoised in " << seconds << " s: " << s.paths << " paths, n = " << s.spatial_exponent
