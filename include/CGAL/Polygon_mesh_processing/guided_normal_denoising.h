@@ -148,15 +148,7 @@ void guidance_normals(const Csr& ring, const Csr& edge_neighbors, const Face_dat
       \cgalParamType{`CGAL::Polygon_mesh_processing::Vertex_update`}
       \cgalParamDefault{`Vertex_update::PAPER`}
     \cgalParamNEnd
-    \cgalParamNBegin{relax_along_surface}
-      \cgalParamDescription{if `true`, after the last iteration each vertex is moved along the surface only, as in
-                            `intrinsic_denoising()`: toward the centroid of its faces in the directions they leave
-                            free, at most half as far from the result as the denoising moved it from the input;
-                            border and constrained vertices stay, and no face turns over against the result}
-      \cgalParamType{bool}
-      \cgalParamDefault{`false` (the method as published)}
-    \cgalParamNEnd
-    \cgalParamNBegin{face_normal_map, vertex_is_constrained_map, vertex_point_map, vertex_index_map, face_index_map, geom_traits}
+    \cgalParamNBegin{relax_along_surface, face_normal_map, vertex_is_constrained_map, vertex_point_map, vertex_index_map, face_index_map, geom_traits}
       \cgalParamDescription{as for `fast_feature_preserving_denoising()`}
     \cgalParamNEnd
   \cgalNamedParamsEnd

@@ -22,7 +22,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -148,22 +147,6 @@ std::vector<Vec3> normal_filtering_scheme(Flat_mesh& mesh, const std::vector<cha
   return filtered;
 }
 
-// Relaxes `points`, the result of a classic normal-filtering run on `mesh`
-// from `input`, along the surface (relax_tangentially()). These methods have
-// no fold safeguard of their own; the relaxation's steps go through it with
-// the result's face normals as the reference, so no face turns over against
-// the result. Returns the number of vertices moved.
-template <typename ConcurrencyTag>
-std::size_t relax_classic_result(const Flat_mesh& mesh, const std::vector<Vec3>& input, std::vector<Vec3>& points,
-                                 const std::vector<char>& fixed)
-{
-  Face_data result;
-  compute_face_data<ConcurrencyTag>(mesh, points, result);
-  Fold_safeguard guard;
-  guard.reference = &result.normals;
-  return relax_tangentially<ConcurrencyTag>(mesh, input, points, fixed, guard);
-}
-
 // Runs a normal-filtering denoiser on `setup.mesh` with its filter
 // `filter(current_face_data, filtered_normals)` (normal_filtering_scheme()):
 // number_of_iterations, vertex_iterations, vertex_update and
@@ -183,7 +166,13 @@ void run_normal_filtering(TriangleMesh& tmesh, const NamedParameters& np,
       choose_parameter(get_parameter(np, internal_np::vertex_iterations), 10u), filter,
       choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER));
   if(relax)
-    relax_classic_result<ConcurrencyTag>(setup.mesh, input, setup.mesh.points, setup.fixed);
+  {
+    // these methods have no fold safeguard of their own: the relaxation's
+    // steps go through it with the result's orientation as the reference, so
+    // no face turns over against the result
+    Fold_safeguard guard;
+    relax_tangentially<ConcurrencyTag>(setup.mesh, input, setup.mesh.points, setup.fixed, guard);
+  }
   setup.write_points(tmesh);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::face_normal_t>::value)
     if(!filtered.empty())

@@ -124,7 +124,9 @@ inline std::array<double, 9> free_projector(const Flat_mesh& m, std::size_t v, c
 // of `m`), as described above. Vertices with `held[v]` set, vertices on the
 // border and vertices with no face stay. With an enabled `guard`, each step
 // goes through the fold safeguard (Fold_safeguard), with the faces' normals
-// before the relaxation as their targets. Returns the number of vertices
+// before the relaxation as their targets and `guard.reference` as their
+// reference orientation (if null, as in update_vertices(), the orientation
+// before the relaxation). Returns the number of vertices
 // that moved. Every decision depends only on the previous step's positions:
 // the result does not depend on the number of threads.
 template <typename ConcurrencyTag>
@@ -137,6 +139,9 @@ std::size_t relax_tangentially(const Flat_mesh& m, const std::vector<Vec3>& inpu
   const std::vector<char> border = T::border_vertices(m);
   Face_data start;
   compute_face_data<ConcurrencyTag>(m, points, start);
+  const std::vector<Vec3>* const saved_reference = guard.reference;
+  if(!guard.reference)
+    guard.reference = &start.normals;
   const std::vector<Vec3> origin = points;
   std::vector<std::array<double, 9>> projector(nv);
   std::vector<double> cap(nv, 0.);
@@ -182,10 +187,11 @@ std::size_t relax_tangentially(const Flat_mesh& m, const std::vector<Vec3>& inpu
         next[v] = origin[v] + offset;
       }
     });
-    if(guard.enabled && guard.reference)
+    if(guard.enabled)
       apply_fold_safeguard<ConcurrencyTag>(m, points, next, start.normals, guard);
     points.swap(next);
   }
+  guard.reference = saved_reference;
   std::size_t moved = 0;
   for(std::size_t v = 0; v < nv; ++v)
     if(!(points[v] == origin[v]))
