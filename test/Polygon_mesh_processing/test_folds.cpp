@@ -12,6 +12,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <denoising_support/synthetic_meshes.h>
+#include <denoising_support/turned_faces.h>
 
 #include <gtest/gtest.h>
 
@@ -38,33 +39,6 @@ Mesh noisy_fandisk(bool impulsive, double sigma)
   return mesh;
 }
 
-// Unnormalised normal (twice the area vector) of each face, by face index.
-std::vector<K::Vector_3> area_vectors(const Mesh& mesh)
-{
-  std::vector<K::Vector_3> n;
-  for(auto f : faces(mesh))
-  {
-    auto h = halfedge(f, mesh);
-    const K::Point_3 &a = mesh.point(source(h, mesh)), &b = mesh.point(target(h, mesh)),
-                     &c = mesh.point(target(next(h, mesh), mesh));
-    n.push_back(CGAL::cross_product(b - a, c - a));
-  }
-  return n;
-}
-
-// Faces of `after` whose normal points against (or is orthogonal to) the
-// normal of the same face in `before`; faces of zero area in `before` are not
-// counted.
-std::size_t flipped_faces(const Mesh& before, const Mesh& after)
-{
-  const auto a = area_vectors(before), b = area_vectors(after);
-  std::size_t count = 0;
-  for(std::size_t i = 0; i < a.size(); ++i)
-    if(a[i].squared_length() > 0. && !(a[i] * b[i] > 0.))
-      ++count;
-  return count;
-}
-
 struct Fold_case
 {
   const char* name;
@@ -79,12 +53,13 @@ void check_no_flips(const Fold_case& c)
   Mesh guarded = noisy, unguarded = noisy;
   PMP::intrinsic_denoising(guarded);
   PMP::intrinsic_denoising(unguarded, CGAL::parameters::prevent_folds(false));
-  const std::size_t fg = flipped_faces(noisy, guarded), fu = flipped_faces(noisy, unguarded);
+  const std::size_t fg = denoising_test::turned_faces(noisy, guarded),
+                    fu = denoising_test::turned_faces(noisy, unguarded);
   std::printf("%s: flipped faces (against the noisy input) guarded %zu, unguarded %zu; against the clean mesh: "
               "noisy %zu, guarded %zu, unguarded %zu; E_n guarded %.3f deg, unguarded %.3f deg\n",
-              c.name, fg, fu, flipped_faces(reference, noisy), flipped_faces(reference, guarded),
-              flipped_faces(reference, unguarded), PMP::face_normal_error(guarded, reference),
-              PMP::face_normal_error(unguarded, reference));
+              c.name, fg, fu, denoising_test::turned_faces(reference, noisy),
+              denoising_test::turned_faces(reference, guarded), denoising_test::turned_faces(reference, unguarded),
+              PMP::face_normal_error(guarded, reference), PMP::face_normal_error(unguarded, reference));
   EXPECT_EQ(fg, 0u);
 }
 
@@ -121,8 +96,8 @@ TEST(FoldSafeguard, NoFlippedFacesWithTheLeastSquaresUpdate)
   std::printf("least squares, fandisk sigma_E 0.5: E_n fixed %.3f, automatic %.3f (noisy %.3f)\n",
               PMP::face_normal_error(fixed, reference), PMP::face_normal_error(automatic, reference),
               PMP::face_normal_error(noisy, reference));
-  EXPECT_EQ(flipped_faces(noisy, fixed), 0u);
-  EXPECT_EQ(flipped_faces(noisy, automatic), 0u);
+  EXPECT_EQ(denoising_test::turned_faces(noisy, fixed), 0u);
+  EXPECT_EQ(denoising_test::turned_faces(noisy, automatic), 0u);
   EXPECT_LT(PMP::face_normal_error(fixed, reference), PMP::face_normal_error(noisy, reference));
 }
 

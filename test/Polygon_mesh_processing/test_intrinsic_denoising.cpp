@@ -12,6 +12,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <denoising_support/synthetic_meshes.h>
+#include <denoising_support/turned_faces.h>
 
 #include <gtest/gtest.h>
 
@@ -408,26 +409,6 @@ TEST(IntrinsicDenoisingInput, OpenMeshWithBorderWorks)
 
 namespace {
 
-// Faces of `after` whose normal points against (or is orthogonal to) the
-// same face's normal in `before` (faces of zero area in `before` skipped).
-std::size_t turned_faces(const Mesh& before, const Mesh& after)
-{
-  std::size_t turned = 0;
-  for(Mesh::Face_index f : faces(before))
-  {
-    const auto h = halfedge(f, before);
-    const K::Vector_3 a =
-        CGAL::cross_product(before.point(target(h, before)) - before.point(source(h, before)),
-                            before.point(target(next(h, before), before)) - before.point(source(h, before)));
-    const K::Vector_3 b =
-        CGAL::cross_product(after.point(target(h, after)) - after.point(source(h, after)),
-                            after.point(target(next(h, after), after)) - after.point(source(h, after)));
-    if(a.squared_length() > 0. && !(a * b > 0.))
-      ++turned;
-  }
-  return turned;
-}
-
 double rms_height(const Mesh& mesh)
 {
   double sum = 0.;
@@ -458,7 +439,7 @@ TEST(IrregularMeshes, ScrambledSliverPatchComesBackFlat)
   EXPECT_GT(e_noisy, 20.);
   EXPECT_LT(e_denoised, 2.);
   EXPECT_LT(rms_height(denoised), rms_height(noisy) / 5.);
-  EXPECT_EQ(turned_faces(noisy, denoised), 0u);
+  EXPECT_EQ(denoising_test::turned_faces(noisy, denoised), 0u);
 #ifdef CGAL_LINKED_WITH_TBB
   Mesh sequential = noisy;
   PMP::intrinsic_denoising<CGAL::Sequential_tag>(sequential);
@@ -489,6 +470,6 @@ TEST(IrregularMeshes, NoiseFreeIrregularCadMeshesBarelyMove)
     std::printf("%s noise-free: E_n %.4f degrees from the input, largest move %.5f mean edges\n", name, e_n, moved);
     EXPECT_LT(e_n, 0.5) << name;
     EXPECT_LT(moved, 0.05) << name;
-    EXPECT_EQ(turned_faces(input, mesh), 0u) << name;
+    EXPECT_EQ(denoising_test::turned_faces(input, mesh), 0u) << name;
   }
 }
