@@ -223,8 +223,10 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
     stop reason `SELF_CHECK` in the report); a longer run goes on from the
     candidate's result. The kept kernel also runs on the copy with the
     candidates' other radii (2, 3 and 6 \f$d\f$, those whose paths are still
-    held); if one brings the copy more than 2% closer than the candidate's
-    radius, the input is denoised again with it (`self_check_radii` and
+    held), walked outwards from the candidate's and in each direction only
+    while each brings the copy closer than the best so far; if one brings
+    the copy more than 2% closer than the candidate's radius, the input is
+    denoised again with it (`self_check_radii` and
     `self_check_smallest_errors` in the report).
   The report lists every candidate with its iterations, residual RMS,
   correlation, flat share and score, and the one kept; its `noise_level` is

@@ -128,7 +128,9 @@ struct Intrinsic_denoising_report
   /// \f$d\f$) on which the kept kernel ran on the synthetic copy, the kept
   /// candidate's first, then the candidates' other radii whose paths were
   /// still held (each run to the first iteration that brought the copy no
-  /// closer); empty if the check did not run
+  /// closer), the larger ones from the candidate's upwards, then the smaller
+  /// ones downwards, each walk ending at the first radius whose smallest
+  /// angle is not below the best so far; empty if the check did not run
   std::vector<double> self_check_radii;
   /// the smallest angle (degrees) on the copy for each of `self_check_radii`.
   /// A radius other than the candidate's is used if its entry is more than

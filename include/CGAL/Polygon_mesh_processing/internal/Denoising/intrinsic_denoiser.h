@@ -20,6 +20,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising_report.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -208,12 +209,17 @@ private:
 
   // The self-check of the kept run `run` (candidate `kept`, on the current
   // paths of `selection`): the kept kernel runs on a synthetic copy of its
-  // result on the paths of the candidate's radius and on those of each other
-  // radius still held. A radius other than the candidate's is taken if the
-  // copy came more than Selection_rules::self_check_tolerance closer to the
-  // result with it; then, or if another number of iterations recovered the
-  // copy better, the run is redone from the input (or, with the candidate's
-  // radius and more iterations, goes on from its result).
+  // result on the paths of the candidate's radius, then on those of the
+  // other radii still held, walking from the candidate's radius towards
+  // larger radii and towards smaller ones; a walk stops at the first radius
+  // that does not bring the copy closer than the best so far, as the copy's
+  // error is taken to have one minimum over the radius (too small a support
+  // leaves noise, too large a one removes shape). A radius other than the
+  // candidate's is taken if the copy came more than
+  // Selection_rules::self_check_tolerance closer to the result with it;
+  // then, or if another number of iterations recovered the copy better, the
+  // run is redone from the input (or, with the candidate's radius and more
+  // iterations, goes on from its result).
   Candidate_run self_check(Automatic_selection<ConcurrencyTag>& selection, Candidate_run&& run,
                            const Selection_rules::Candidate& kept, const std::vector<char>& constrained)
   {
@@ -225,21 +231,27 @@ private:
     report_.self_check_smallest_errors.assign(1, smallest(errors));
     double radius = run.relative_radius;
     double limit = smallest(errors) * (1. - Selection_rules::self_check_tolerance);
-    for(double r : selection.held_radii())
-    {
-      if(same_relative_radius(r, run.relative_radius) || !selection.reuse_paths(r, constrained))
-        continue;
-      std::vector<double> e = selection.self_check_errors(run, kept.sigma, copy, true);
-      const double e_min = smallest(e);
-      report_.self_check_radii.push_back(r);
-      report_.self_check_smallest_errors.push_back(e_min);
-      if(e_min < limit)
+    std::vector<double> radii = selection.held_radii();
+    std::sort(radii.begin(), radii.end());
+    const auto own = std::find_if(radii.begin(), radii.end(),
+                                  [&run](double r) { return same_relative_radius(r, run.relative_radius); });
+    const std::ptrdiff_t start = own - radii.begin(), count = std::ptrdiff_t(radii.size());
+    for(std::ptrdiff_t step : {std::ptrdiff_t(1), std::ptrdiff_t(-1)})
+      for(std::ptrdiff_t i = start + step; i >= 0 && i < count; i += step)
       {
+        const double r = radii[std::size_t(i)];
+        if(!selection.reuse_paths(r, constrained))
+          continue;
+        std::vector<double> e = selection.self_check_errors(run, kept.sigma, copy, true);
+        const double e_min = smallest(e);
+        report_.self_check_radii.push_back(r);
+        report_.self_check_smallest_errors.push_back(e_min);
+        if(!(e_min < limit))
+          break; // the error rises from here on in this direction
         limit = e_min;
         radius = r;
         errors = std::move(e);
       }
-    }
     if(!selection.reuse_paths(radius, constrained))
       selection.setup_paths(candidate_setup({kept.sigma, radius}), constrained);
     const unsigned int k = self_check_iterations(errors, run.iterations);
