@@ -437,6 +437,75 @@ TEST(AutomaticParameters, SelectionReusesThePathsOfARadiusRunBefore)
   EXPECT_TRUE(selection.reuse_paths(2., constrained));
 }
 
+// With Parallel_tag the candidates run as concurrent tasks once all their
+// setups are built (fandisk's fit the budget many times over): each run is
+// the same, bit for bit, as in the one-after-the-other order of
+// Sequential_tag, progress comes once per candidate in order, and the setups
+// are held as that order leaves them.
+TEST(AutomaticParameters, ConcurrentCandidatesAreTheSequentialOnes)
+{
+  Mesh noisy = fandisk();
+  PMP::add_gaussian_noise(noisy, 0.3, CGAL::parameters::random_seed(1));
+  const auto np = CGAL::parameters::default_values();
+  const D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters> maps(noisy, np);
+  std::vector<char> constrained(num_vertices(noisy), 0);
+  constrained[7] = constrained[100] = 1;
+  const auto setup = [&](const D::Selection_rules::Candidate& c) {
+    D::Setup_defaults d;
+    d.relative_radius = c.relative_radius;
+    return D::make_intrinsic_setup<CGAL::Sequential_tag>(noisy, np, maps, "test",
+                                                         [&d](const D::Flat_mesh&) { return d; });
+  };
+  constexpr std::size_t n = D::Selection_rules::number_of_candidates;
+  D::Automatic_selection<CGAL::Sequential_tag> sequential(2, true, true);
+  D::Automatic_selection<CGAL::Parallel_if_available_tag> parallel(2, true, true);
+  std::vector<std::size_t> seen_sequential, seen_parallel, runs_at_progress_sequential, runs_at_progress_parallel;
+  sequential.run_candidates(D::Selection_rules::candidates, n, setup, constrained,
+                            [&](std::size_t done, std::size_t total) {
+                              EXPECT_EQ(total, n);
+                              seen_sequential.push_back(done);
+                              runs_at_progress_sequential.push_back(sequential.runs().size());
+                            });
+  parallel.run_candidates(D::Selection_rules::candidates, n, setup, constrained,
+                          [&](std::size_t done, std::size_t total) {
+                            EXPECT_EQ(total, n);
+                            seen_parallel.push_back(done);
+                            runs_at_progress_parallel.push_back(parallel.runs().size());
+                          });
+  const std::vector<std::size_t> in_order = {1, 2, 3, 4};
+  EXPECT_EQ(seen_sequential, in_order);
+  EXPECT_EQ(seen_parallel, in_order);
+  // one after the other, each reported when it has run; concurrent, all
+  // reported once all have run
+  EXPECT_EQ(runs_at_progress_sequential, in_order);
+#ifdef CGAL_LINKED_WITH_TBB
+  EXPECT_EQ(runs_at_progress_parallel, std::vector<std::size_t>(n, n));
+#endif
+  ASSERT_EQ(sequential.runs().size(), n);
+  ASSERT_EQ(parallel.runs().size(), n);
+  for(std::size_t c = 0; c < n; ++c)
+  {
+    const D::Candidate_run &a = sequential.runs()[c], &b = parallel.runs()[c];
+    EXPECT_EQ(a.sigma, D::Selection_rules::candidates[c].sigma);
+    EXPECT_EQ(a.sigma, b.sigma);
+    EXPECT_EQ(a.relative_radius, b.relative_radius);
+    EXPECT_GT(a.iterations, 0u);
+    EXPECT_EQ(a.iterations, b.iterations);
+    EXPECT_EQ(a.flat_share, b.flat_share);
+    ASSERT_EQ(a.trajectory.size(), b.trajectory.size());
+    for(std::size_t k = 0; k < a.trajectory.size(); ++k)
+    {
+      EXPECT_EQ(a.trajectory[k].rms, b.trajectory[k].rms);
+      EXPECT_EQ(a.trajectory[k].correlation, b.trajectory[k].correlation);
+    }
+    ASSERT_EQ(a.points, b.points);
+    ASSERT_EQ(a.normals, b.normals);
+  }
+  EXPECT_EQ(sequential.held_radii(), parallel.held_radii());
+  EXPECT_EQ(parallel.held_radii().size(), 3u);
+  EXPECT_EQ(sequential.choose(), parallel.choose());
+}
+
 // The selection's result does not depend on the thread count.
 TEST(AutomaticParameters, SelectionIsThreadIndependent)
 {

@@ -298,7 +298,9 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
     \cgalParamNBegin{progress_callback}
       \cgalParamDescription{called after each iteration with the number of iterations done and the largest number
                             (the stopping rule may end the run earlier); during the automatic selection, after each
-                            candidate with the number of candidates run and their number}
+                            candidate with the number of candidates run and their number (with `CGAL::Parallel_tag`,
+                            where the candidates run as concurrent tasks, these calls come together once all have
+                            run); always from the calling thread}
       \cgalParamType{a callable with signature `void(std::size_t, std::size_t)`}
       \cgalParamDefault{none}
     \cgalParamNEnd

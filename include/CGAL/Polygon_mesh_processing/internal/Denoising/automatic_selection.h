@@ -21,6 +21,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/sparse_noise.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/tangential_relaxation.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <cmath>
@@ -28,6 +29,7 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -101,10 +103,13 @@ struct Selection_rules
   static constexpr unsigned int self_check_max_iterations = 60;
   // The self-check also runs the kept kernel on the copy with the paths of
   // the candidates' other radii (those still held: see kept_setup_bytes),
-  // each to its first minimum, and takes the radius whose smallest error is
-  // lowest if it is more than self_check_tolerance below the candidate's
-  // own; the run is then redone from the input with that radius and the
-  // count its copy asks for. The candidates' radii are few and tied to their
+  // each to its first minimum, walking outwards from the candidate's radius
+  // while each radius comes closer than the best so far, and takes the
+  // radius whose smallest error is lowest if it is more than
+  // self_check_tolerance below the candidate's own; the run is then redone
+  // from the input with that radius and the count its copy asks for. (On
+  // the corpus the walk gives the same choice as trying every radius on all
+  // 224 inputs and skips the run on 6d on 132.) The candidates' radii are few and tied to their
   // kernels; on a surface with no shape to lose at that scale (a sphere, a
   // gently curved part, strong noise on an organic model) the kept kernel
   // gains from a wider support, which the copy shows. On the corpus against
@@ -115,7 +120,9 @@ struct Selection_rules
   // kept for the kept candidate while they take at most this many bytes
   // together, so that its paths need not be built again; past it (meshes of
   // some hundred thousand faces) they are built again, as memory matters
-  // more there.
+  // more there. With Parallel_tag, when the setups of all the radii are
+  // estimated to fit in it together, they are built first and the
+  // candidates run as concurrent tasks (run_candidates()).
   static constexpr std::size_t kept_setup_bytes = std::size_t(256) << 20;
 };
 
@@ -310,18 +317,23 @@ inline unsigned int self_check_iterations(const std::vector<double>& errors, uns
 // within a relative 1e-9.
 inline bool same_relative_radius(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(a, b); }
 
+// The bytes held by the arrays of the paths `p`.
+inline std::size_t path_bytes(const Path_forest& p)
+{
+  return sizeof(std::uint32_t) * (p.offsets.size() + p.face.size() + p.parent.size()) + sizeof(double) * p.step.size() +
+         sizeof(p.square_regions[0]) * p.square_regions.size() + p.weighted.size();
+}
+
 // The bytes held by the arrays of `s` (its mesh copy, face data and paths).
 inline std::size_t setup_bytes(const Intrinsic_setup& s)
 {
   const Flat_mesh& m = s.mesh;
   const Face_data& f = s.input_faces;
-  const Path_forest& p = s.paths;
   return sizeof(Vec3) * (m.points.size() + f.normals.size() + f.centroids.size()) +
          sizeof(m.triangles[0]) * m.triangles.size() +
-         sizeof(std::uint32_t) * (m.vertex_face_offsets.size() + m.vertex_faces.size() + m.input_face.size() +
-                                  m.input_vertex.size() + p.offsets.size() + p.face.size() + p.parent.size()) +
-         sizeof(double) * (f.areas.size() + p.step.size()) + sizeof(p.square_regions[0]) * p.square_regions.size() +
-         p.weighted.size();
+         sizeof(std::uint32_t) *
+             (m.vertex_face_offsets.size() + m.vertex_faces.size() + m.input_face.size() + m.input_vertex.size()) +
+         sizeof(double) * f.areas.size() + path_bytes(s.paths);
 }
 
 // The selection's steps, in the order intrinsic_denoising() calls them: for
@@ -378,6 +390,52 @@ public:
 
   // Runs the candidate of kernel width `sigma` on the current paths.
   void run(double sigma) { runs_.push_back(run_again(sigma, Selection_rules::max_iterations)); }
+
+  // Runs the `n` candidates `candidates` on the input, into runs() in their
+  // order, each on the paths that `make_setup(candidate)` builds for its
+  // radius (consecutive candidates of the same radius share them), and
+  // calls `progress(c + 1, n)` for each from the calling thread. With
+  // Parallel_tag, if the setups of all the radii are estimated to fit in
+  // Selection_rules::kept_setup_bytes together, they are all built first and
+  // the candidates then run as concurrent tasks, each parallel inside too:
+  // on a small mesh one run alone leaves a thread idle at each of its many
+  // short parallel loops. Otherwise they run one after the other, the setup
+  // of a radius built when its first candidate comes. Each run is the same
+  // either way; the setups end as the sequential order leaves them.
+  template <typename MakeSetup, typename Progress>
+  void run_candidates(const Selection_rules::Candidate* candidates, std::size_t n, const MakeSetup& make_setup,
+                      const std::vector<char>& constrained, const Progress& progress)
+  {
+    runs_.clear();
+    const auto new_radius = [candidates](std::size_t c) {
+      return c == 0 || !same_relative_radius(candidates[c].relative_radius, candidates[c - 1].relative_radius);
+    };
+    std::size_t c = 0;
+    if constexpr(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+    {
+      if(n > 1)
+      {
+        setup_paths(make_setup(candidates[0]), constrained);
+        if(setups_fit_together(candidates, n))
+        {
+          run_concurrently(candidates, n, make_setup, constrained);
+          for(std::size_t i = 0; i < n; ++i)
+            progress(i + 1, n);
+          return;
+        }
+        run(candidates[0].sigma); // its setup is built
+        progress(1, n);
+        c = 1;
+      }
+    }
+    for(; c < n; ++c)
+    {
+      if(new_radius(c))
+        setup_paths(make_setup(candidates[c]), constrained);
+      run(candidates[c].sigma);
+      progress(c + 1, n);
+    }
+  }
 
   // Scores the candidates and returns the index of the one kept.
   std::size_t choose() { return choose_candidate(runs_); }
@@ -441,47 +499,45 @@ public:
   }
 
   // The self-check of `run`, a candidate of kernel width `sigma`, on the
-  // current paths (those of the candidate's radius, or of another): the same
-  // kernel runs on `copy_in_input_order`, a synthetic noisy copy of its
-  // result (synthetic_copy()), for as many iterations as it did, and on (up
-  // to Selection_rules::self_check_max_iterations) while each iteration
-  // brings the copy closer and the error stays within the tolerance of the
+  // held paths (see held_radii()) of each radius of `radii`: the same kernel
+  // runs on `copy_in_input_order`, a synthetic noisy copy of its result
+  // (synthetic_copy()). On the first radius, if `first_as_run` (the
+  // candidate's own), for as many iterations as the run did, and on (up to
+  // Selection_rules::self_check_max_iterations) while each iteration brings
+  // the copy closer and the error stays within the tolerance of the
   // smallest, so that a minimum after run.iterations is found when the
-  // errors fall to it and rise after it. With `to_first_minimum`, it stops
-  // instead at the first iteration that brings the copy no closer (another
-  // radius: only its smallest error is wanted, which comes first). Returns
-  // the mean angle in degrees between the face normals of the copy after k
-  // iterations and those of the result, from k = 0 (the copy itself). The
-  // iterations kept are self_check_iterations() of it.
-  std::vector<double> self_check_errors(const Candidate_run& run, double sigma,
-                                        const std::vector<Vec3>& copy_in_input_order, bool to_first_minimum = false)
+  // errors fall to it and rise after it; on the others, to the first
+  // iteration that brings the copy no closer (another radius: only its
+  // smallest error is wanted, which comes first). Returns, per radius, the
+  // mean angle in degrees between the face normals of the copy after k
+  // iterations and those of the result, from k = 0 (the copy itself); the
+  // iterations kept are self_check_iterations() of the candidate's. With
+  // Parallel_tag the radii run as concurrent tasks (each parallel inside
+  // too); the current setup does not change.
+  std::vector<std::vector<double>> self_check_errors(const Candidate_run& run, double sigma,
+                                                     const std::vector<Vec3>& copy_in_input_order,
+                                                     const std::vector<double>& radii, bool first_as_run)
   {
-    const Intrinsic_kernel kernel = kernel_of_width(sigma);
+    std::vector<const Intrinsic_setup*> setups;
+    for(double r : radii)
+    {
+      setups.push_back(held_setup(r));
+      CGAL_precondition(setups.back() != nullptr);
+    }
+    // the setups' meshes are the same (see run_concurrently())
     const std::vector<Vec3> result = setup_.mesh.vertex_values_from_input_order(run.points);
-    std::vector<Vec3> copy = setup_.mesh.vertex_values_from_input_order(copy_in_input_order);
-    Face_data target, current;
-    compute_face_data<ConcurrencyTag>(setup_.mesh, result, target);
-    compute_face_data<ConcurrencyTag>(setup_.mesh, copy, current);
-    std::vector<double> errors(1, mean_angle_degrees(current.normals, target.normals));
-    Fold_safeguard guard; // folds checked against the copy's own orientation
-    guard.enabled = guard_.enabled;
-    const std::vector<Vec3> copy_normals = current.normals;
-    guard.reference = guard.enabled ? &copy_normals : nullptr;
-    Face_data faces;
-    double smallest = errors.front();
-    iterate_filter<ConcurrencyTag>(
-        setup_, kernel, std::move(current), copy, fixed_, vertex_iterations_, guard,
-        Selection_rules::self_check_max_iterations,
-        [&](unsigned int k, const std::vector<Vec3>& p, std::vector<Vec3>&) {
-          compute_face_data<ConcurrencyTag>(setup_.mesh, p, faces);
-          errors.push_back(mean_angle_degrees(faces.normals, target.normals));
-          const double e = errors.back(), before = errors[k - 1];
-          smallest = std::min(smallest, e);
-          if(to_first_minimum)
-            return e < before;
-          return k < run.iterations || (e < before && e <= smallest * (1. + Selection_rules::self_check_tolerance));
+    const std::vector<Vec3> copy = setup_.mesh.vertex_values_from_input_order(copy_in_input_order);
+    std::vector<std::vector<double>> errors(radii.size());
+    for_each_chunk<ConcurrencyTag>(
+        radii.size(),
+        [&](std::size_t b, std::size_t e) {
+          for(std::size_t i = b; i < e; ++i)
+          {
+            Least_squares_recovery recovery = recovery_;
+            errors[i] = errors_on(*setups[i], run.iterations, sigma, result, copy, !(i == 0 && first_as_run), recovery);
+          }
         },
-        &recovery_);
+        1);
     return errors;
   }
 
@@ -568,6 +624,131 @@ public:
   double centroid_distance() const { return setup_.centroid_distance; }
 
 private:
+  // The held setup of `relative_radius` (the current one or a kept one), or
+  // null.
+  const Intrinsic_setup* held_setup(double relative_radius) const
+  {
+    if(!setup_.mesh.points.empty() && same_relative_radius(current_relative_radius(), relative_radius))
+      return &setup_;
+    for(std::size_t i = 0; i < kept_setups_.size(); ++i)
+      if(same_relative_radius(kept_radius_[i], relative_radius))
+        return &kept_setups_[i];
+    return nullptr;
+  }
+
+  // One self-check run (self_check_errors()) on the paths of `s`, from
+  // `copy` towards `result` (both in the vertex order of the setups), for a
+  // run of `iterations` iterations.
+  std::vector<double> errors_on(const Intrinsic_setup& s, unsigned int iterations, double sigma,
+                                const std::vector<Vec3>& result, std::vector<Vec3> copy, bool to_first_minimum,
+                                Least_squares_recovery& recovery) const
+  {
+    Intrinsic_kernel kernel = s.kernel;
+    kernel.sigma_spatial = kernel.sigma_range = sigma;
+    Face_data target, current;
+    compute_face_data<ConcurrencyTag>(s.mesh, result, target);
+    compute_face_data<ConcurrencyTag>(s.mesh, copy, current);
+    std::vector<double> errors(1, mean_angle_degrees(current.normals, target.normals));
+    Fold_safeguard guard; // folds checked against the copy's own orientation
+    guard.enabled = guard_.enabled;
+    const std::vector<Vec3> copy_normals = current.normals;
+    guard.reference = guard.enabled ? &copy_normals : nullptr;
+    Face_data faces;
+    double smallest = errors.front();
+    iterate_filter<ConcurrencyTag>(
+        s, kernel, std::move(current), copy, fixed_, vertex_iterations_, guard,
+        Selection_rules::self_check_max_iterations,
+        [&](unsigned int k, const std::vector<Vec3>& p, std::vector<Vec3>&) {
+          compute_face_data<ConcurrencyTag>(s.mesh, p, faces);
+          errors.push_back(mean_angle_degrees(faces.normals, target.normals));
+          const double e = errors.back(), before = errors[k - 1];
+          smallest = std::min(smallest, e);
+          if(to_first_minimum)
+            return e < before;
+          return k < iterations || (e < before && e <= smallest * (1. + Selection_rules::self_check_tolerance));
+        },
+        &recovery);
+    return errors;
+  }
+
+  // Whether the setups of all the radii of `candidates` would fit in
+  // Selection_rules::kept_setup_bytes together, estimated from the current
+  // setup (of the first candidate's radius): the mesh and face data as they
+  // are, the paths scaled by the square of the radius ratio (a path per face
+  // of each neighbourhood).
+  bool setups_fit_together(const Selection_rules::Candidate* candidates, std::size_t n) const
+  {
+    const double r0 = current_relative_radius();
+    if(!(r0 > 0.))
+      return false;
+    const double paths = double(path_bytes(setup_.paths)), rest = double(setup_bytes(setup_)) - paths;
+    double total = 0.;
+    for(std::size_t c = 0; c < n; ++c)
+    {
+      bool seen = false;
+      for(std::size_t b = 0; b < c; ++b)
+        seen = seen || same_relative_radius(candidates[b].relative_radius, candidates[c].relative_radius);
+      if(!seen)
+      {
+        const double ratio = candidates[c].relative_radius / r0;
+        total += rest + paths * ratio * ratio;
+      }
+    }
+    return total <= double(Selection_rules::kept_setup_bytes);
+  }
+
+  // run_candidates() with every setup built first (the first one is the
+  // current setup), then the candidates as concurrent tasks. The setups are
+  // built from the same input, so their meshes (vertex and face orders
+  // included) are the same: the constrained flags, adjacency and input
+  // normals of the current one serve all. Each task has its own fold
+  // safeguard and recovery scratch space.
+  template <typename MakeSetup>
+  void run_concurrently(const Selection_rules::Candidate* candidates, std::size_t n, const MakeSetup& make_setup,
+                        const std::vector<char>& constrained)
+  {
+    std::vector<Intrinsic_setup> setups;
+    std::vector<std::size_t> setup_of(n, 0);
+    setups.push_back(std::move(setup_));
+    setup_ = Intrinsic_setup();
+    for(std::size_t c = 1; c < n; ++c)
+    {
+      if(!same_relative_radius(candidates[c].relative_radius, candidates[c - 1].relative_radius))
+      {
+        Intrinsic_setup s = make_setup(candidates[c]);
+        if(!s.mesh.input_face.empty())
+          reorder_vertices_for_locality(s.mesh);
+        CGAL_assertion(s.mesh.input_face == setups.front().mesh.input_face &&
+                       s.mesh.input_vertex == setups.front().mesh.input_vertex);
+        setups.push_back(std::move(s));
+      }
+      setup_of[c] = setups.size() - 1;
+    }
+    runs_.assign(n, Candidate_run());
+    for_each_chunk<ConcurrencyTag>(
+        n,
+        [&](std::size_t b, std::size_t e) {
+          for(std::size_t c = b; c < e; ++c)
+          {
+            const Intrinsic_setup& s = setups[setup_of[c]];
+            Intrinsic_kernel kernel = s.kernel;
+            kernel.sigma_spatial = kernel.sigma_range = candidates[c].sigma;
+            Fold_safeguard guard = guard_;
+            Least_squares_recovery recovery = recovery_;
+            runs_[c] = run_candidate<ConcurrencyTag>(s, kernel, adjacency_, s.mesh.points, fixed_, vertex_iterations_,
+                                                     guard, mean_edge_, keep_normals_, &recovery);
+          }
+        },
+        1);
+    setup_ = std::move(setups.front());
+    for(std::size_t i = 1; i < setups.size(); ++i)
+    {
+      keep_current_setup();
+      setup_ = std::move(setups[i]);
+    }
+    use_setup(constrained);
+  }
+
   // The current setup's radius in d.
   double current_relative_radius() const
   {

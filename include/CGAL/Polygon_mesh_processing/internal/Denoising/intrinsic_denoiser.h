@@ -19,6 +19,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/tangential_relaxation.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising_report.h>
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <cmath>
@@ -82,16 +83,10 @@ public:
   {
     Automatic_selection<ConcurrencyTag> selection(vertex_iterations_, prevent_folds_, keep_normals, vertex_update_);
     const std::vector<char> constrained = maps_.constrained(tmesh_);
-    constexpr std::size_t n = Selection_rules::number_of_candidates;
-    const auto progress = progress_callback();
-    for(std::size_t c = 0; c < n; ++c)
-    {
-      const Selection_rules::Candidate& candidate = Selection_rules::candidates[c];
-      if(c == 0 || candidate.relative_radius != Selection_rules::candidates[c - 1].relative_radius)
-        selection.setup_paths(candidate_setup(candidate), constrained);
-      selection.run(candidate.sigma);
-      progress(c + 1, n);
-    }
+    selection.run_candidates(
+        Selection_rules::candidates, Selection_rules::number_of_candidates,
+        [this](const Selection_rules::Candidate& candidate) { return candidate_setup(candidate); }, constrained,
+        progress_callback());
     const std::size_t best = selection.choose();
     std::vector<Candidate_run>& runs = selection.runs();
     report_selection(selection, best);
@@ -214,8 +209,9 @@ private:
   // larger radii and towards smaller ones; a walk stops at the first radius
   // that does not bring the copy closer than the best so far, as the copy's
   // error is taken to have one minimum over the radius (too small a support
-  // leaves noise, too large a one removes shape). A radius other than the
-  // candidate's is taken if the copy came more than
+  // leaves noise, too large a one removes shape). The candidate's radius and
+  // the nearest on either side, always checked, run together. A radius other
+  // than the candidate's is taken if the copy came more than
   // Selection_rules::self_check_tolerance closer to the result with it;
   // then, or if another number of iterations recovered the copy better, the
   // run is redone from the input (or, with the candidate's radius and more
@@ -224,25 +220,34 @@ private:
                            const Selection_rules::Candidate& kept, const std::vector<char>& constrained)
   {
     const std::vector<Vec3> copy = selection.synthetic_copy(run);
-    std::vector<double> errors = selection.self_check_errors(run, kept.sigma, copy);
+    std::vector<double> radii = selection.held_radii(); // the candidate's among them: its paths are current
+    std::sort(radii.begin(), radii.end());
+    const auto own = std::find_if(radii.begin(), radii.end(),
+                                  [&run](double r) { return same_relative_radius(r, run.relative_radius); });
+    CGAL_assertion(own != radii.end());
+    const std::ptrdiff_t start = own - radii.begin(), count = std::ptrdiff_t(radii.size());
+    std::vector<double> first(1, run.relative_radius);
+    if(start + 1 < count)
+      first.push_back(radii[std::size_t(start + 1)]);
+    if(start >= 1)
+      first.push_back(radii[std::size_t(start - 1)]);
+    std::vector<std::vector<double>> first_errors = selection.self_check_errors(run, kept.sigma, copy, first, true);
+    std::vector<double> errors = std::move(first_errors[0]);
     const auto smallest = [](const std::vector<double>& e) { return *std::min_element(e.begin(), e.end()); };
     report_.maximum_iterations = Selection_rules::self_check_max_iterations;
     report_.self_check_radii.assign(1, run.relative_radius);
     report_.self_check_smallest_errors.assign(1, smallest(errors));
     double radius = run.relative_radius;
     double limit = smallest(errors) * (1. - Selection_rules::self_check_tolerance);
-    std::vector<double> radii = selection.held_radii();
-    std::sort(radii.begin(), radii.end());
-    const auto own = std::find_if(radii.begin(), radii.end(),
-                                  [&run](double r) { return same_relative_radius(r, run.relative_radius); });
-    const std::ptrdiff_t start = own - radii.begin(), count = std::ptrdiff_t(radii.size());
+    std::size_t next = 1; // of first_errors
     for(std::ptrdiff_t step : {std::ptrdiff_t(1), std::ptrdiff_t(-1)})
       for(std::ptrdiff_t i = start + step; i >= 0 && i < count; i += step)
       {
         const double r = radii[std::size_t(i)];
-        if(!selection.reuse_paths(r, constrained))
-          continue;
-        std::vector<double> e = selection.self_check_errors(run, kept.sigma, copy, true);
+        std::vector<double> e =
+            i == start + step
+                ? std::move(first_errors[next++])
+                : std::move(selection.self_check_errors(run, kept.sigma, copy, std::vector<double>(1, r), false)[0]);
         const double e_min = smallest(e);
         report_.self_check_radii.push_back(r);
         report_.self_check_smallest_errors.push_back(e_min);
