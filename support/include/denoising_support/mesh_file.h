@@ -325,8 +325,9 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
       for(std::size_t k = 0; k < r.self_check_errors.size(); ++k)
         out << (k % 10 == 0 ? "\n   " : "") << " " << k << ": " << r.self_check_errors[k];
       out << "\n";
-      // the radii tried on the copy: a later one is taken if more than 2% below the first
-      out << "smallest angle on the copy with the kept kernel and each radius (another taken if 2% below the first):";
+      // the radii tried on the copy, walked outwards from the candidate's
+      out << "smallest angle on the copy with the kept kernel, by radius (walked outwards from the candidate's while "
+             "the copy comes closer; another taken if over 2% below the best before it):";
       for(std::size_t i = 0; i < r.self_check_radii.size() && i < r.self_check_smallest_errors.size(); ++i)
         out << (i > 0 ? "," : "") << " " << r.self_check_radii[i] << " d: " << r.self_check_smallest_errors[i];
       out << "\n";
