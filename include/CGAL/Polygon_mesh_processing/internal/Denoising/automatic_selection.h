@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -522,7 +523,8 @@ public:
     for(double r : radii)
     {
       setups.push_back(held_setup(r));
-      CGAL_precondition(setups.back() != nullptr);
+      if(setups.back() == nullptr)
+        throw std::logic_error("self_check_errors(): the paths of a radius are not held");
     }
     // the setups' meshes are the same (see run_concurrently())
     const std::vector<Vec3> result = setup_.mesh.vertex_values_from_input_order(run.points);
