@@ -645,8 +645,7 @@ private:
                                 const std::vector<Vec3>& result, std::vector<Vec3> copy, bool to_first_minimum,
                                 Least_squares_recovery& recovery) const
   {
-    Intrinsic_kernel kernel = s.kernel;
-    kernel.sigma_spatial = kernel.sigma_range = sigma;
+    const Intrinsic_kernel kernel = kernel_of_width(s, sigma);
     Face_data target, current;
     compute_face_data<ConcurrencyTag>(s.mesh, result, target);
     compute_face_data<ConcurrencyTag>(s.mesh, copy, current);
@@ -733,12 +732,11 @@ private:
           for(std::size_t c = b; c < e; ++c)
           {
             const Intrinsic_setup& s = setups[setup_of[c]];
-            Intrinsic_kernel kernel = s.kernel;
-            kernel.sigma_spatial = kernel.sigma_range = candidates[c].sigma;
             Fold_safeguard guard = guard_;
             Least_squares_recovery recovery = recovery_;
-            runs_[c] = run_candidate<ConcurrencyTag>(s, kernel, adjacency_, s.mesh.points, fixed_, vertex_iterations_,
-                                                     guard, mean_edge_, keep_normals_, &recovery);
+            runs_[c] =
+                run_candidate<ConcurrencyTag>(s, kernel_of_width(s, candidates[c].sigma), adjacency_, s.mesh.points,
+                                              fixed_, vertex_iterations_, guard, mean_edge_, keep_normals_, &recovery);
           }
         },
         1);
@@ -785,13 +783,15 @@ private:
     mean_edge_ = mean_edge_length(setup_.mesh);
   }
 
-  // The setup's kernel with sigma_s = sigma_r = `sigma`.
-  Intrinsic_kernel kernel_of_width(double sigma) const
+  // The kernel of setup `s` (by default the current one) with sigma_s =
+  // sigma_r = `sigma`.
+  static Intrinsic_kernel kernel_of_width(const Intrinsic_setup& s, double sigma)
   {
-    Intrinsic_kernel kernel = setup_.kernel;
+    Intrinsic_kernel kernel = s.kernel;
     kernel.sigma_spatial = kernel.sigma_range = sigma;
     return kernel;
   }
+  Intrinsic_kernel kernel_of_width(double sigma) const { return kernel_of_width(setup_, sigma); }
 
   unsigned int vertex_iterations_;
   bool keep_normals_;
