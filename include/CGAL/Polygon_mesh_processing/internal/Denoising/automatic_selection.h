@@ -110,10 +110,10 @@ struct Selection_rules
   // self_check_tolerance below the candidate's own; the run is then redone
   // from the input with that radius and the count its copy asks for. (On
   // the corpus the walk gives the same choice as trying every radius on all
-  // 224 inputs and skips the run on 6d on 132.) The candidates' radii are few and tied to their
-  // kernels; on a surface with no shape to lose at that scale (a sphere, a
-  // gently curved part, strong noise on an organic model) the kept kernel
-  // gains from a wider support, which the copy shows. On the corpus against
+  // 224 inputs and skips the run on 6d on 132.) The candidates' radii are
+  // few and tied to their kernels; on a surface with no shape to lose at
+  // that scale (a sphere, a gently curved part, strong noise on an organic
+  // model) the kept kernel gains from a wider support, which the copy shows. On the corpus against
   // the check of the candidate's radius alone: 24 inputs change, 20 for the
   // better (by up to 31%), 4 for the worse (depth scans, by up to 8%: the
   // copy's noise is white, the scan's low frequencies stay in the result).
@@ -372,21 +372,17 @@ public:
   // paths must be set up again).
   bool reuse_paths(double relative_radius, const std::vector<char>& constrained_in_input_order)
   {
-    const auto same = [relative_radius](double r) { return same_relative_radius(r, relative_radius); };
-    if(!setup_.mesh.points.empty() && same(current_relative_radius()))
-      return true;
-    for(std::size_t i = 0; i < kept_setups_.size(); ++i)
-      if(same(kept_radius_[i]))
-      {
-        Intrinsic_setup s = std::move(kept_setups_[i]);
-        kept_setups_.erase(kept_setups_.begin() + std::ptrdiff_t(i));
-        kept_radius_.erase(kept_radius_.begin() + std::ptrdiff_t(i));
-        keep_current_setup();
-        setup_ = std::move(s);
-        use_setup(constrained_in_input_order);
-        return true;
-      }
-    return false;
+    const Intrinsic_setup* held = held_setup(relative_radius);
+    if(held == nullptr || held == &setup_)
+      return held != nullptr;
+    const std::ptrdiff_t i = held - kept_setups_.data();
+    Intrinsic_setup s = std::move(kept_setups_[std::size_t(i)]);
+    kept_setups_.erase(kept_setups_.begin() + i);
+    kept_radius_.erase(kept_radius_.begin() + i);
+    keep_current_setup();
+    setup_ = std::move(s);
+    use_setup(constrained_in_input_order);
+    return true;
   }
 
   // Runs the candidate of kernel width `sigma` on the current paths.
@@ -408,9 +404,6 @@ public:
                       const std::vector<char>& constrained, const Progress& progress)
   {
     runs_.clear();
-    const auto new_radius = [candidates](std::size_t c) {
-      return c == 0 || !same_relative_radius(candidates[c].relative_radius, candidates[c - 1].relative_radius);
-    };
     std::size_t c = 0;
     if constexpr(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
     {
@@ -431,7 +424,7 @@ public:
     }
     for(; c < n; ++c)
     {
-      if(new_radius(c))
+      if(starts_radius(candidates, c))
         setup_paths(make_setup(candidates[c]), constrained);
       run(candidates[c].sigma);
       progress(c + 1, n);
@@ -672,6 +665,14 @@ private:
     return errors;
   }
 
+  // Whether candidate c of `candidates` needs a setup of its own: the first,
+  // or one whose radius differs from the candidate's before it (those of the
+  // same radius in a row share their paths).
+  static bool starts_radius(const Selection_rules::Candidate* candidates, std::size_t c)
+  {
+    return c == 0 || !same_relative_radius(candidates[c].relative_radius, candidates[c - 1].relative_radius);
+  }
+
   // Whether the setups of all the radii of `candidates` would fit in
   // Selection_rules::kept_setup_bytes together, estimated from the current
   // setup (of the first candidate's radius): the mesh and face data as they
@@ -685,16 +686,11 @@ private:
     const double paths = double(path_bytes(setup_.paths)), rest = double(setup_bytes(setup_)) - paths;
     double total = 0.;
     for(std::size_t c = 0; c < n; ++c)
-    {
-      bool seen = false;
-      for(std::size_t b = 0; b < c; ++b)
-        seen = seen || same_relative_radius(candidates[b].relative_radius, candidates[c].relative_radius);
-      if(!seen)
+      if(starts_radius(candidates, c))
       {
         const double ratio = candidates[c].relative_radius / r0;
         total += rest + paths * ratio * ratio;
       }
-    }
     return total <= double(Selection_rules::kept_setup_bytes);
   }
 
@@ -714,7 +710,7 @@ private:
     setup_ = Intrinsic_setup();
     for(std::size_t c = 1; c < n; ++c)
     {
-      if(!same_relative_radius(candidates[c].relative_radius, candidates[c - 1].relative_radius))
+      if(starts_radius(candidates, c))
       {
         Intrinsic_setup s = make_setup(candidates[c]);
         if(!s.mesh.input_face.empty())
