@@ -465,56 +465,54 @@ struct Row
   std::string chosen;
 };
 
+// Inputs that meet a condition: how many, and their names.
+struct Named_inputs
+{
+  std::size_t count = 0;
+  std::string names; // ", "-separated, after a space
+  void add(const std::string& name) { names += (count++ == 0 ? " " : ", ") + name; }
+};
+
 void summary(const std::vector<Row>& rows, const char* group)
 {
   if(rows.empty())
     return;
   std::vector<double> vs_oracle, vs_fixed, vs_classic, time_ratio;
-  std::size_t worse_En = 0, worse_Ev = 0, within10 = 0, within25 = 0, fixed_ok = 0, fixed_5 = 0, classic_ok = 0,
-              depth = 0, depth_ok = 0, oracle_classic_ok = 0;
-  // names of the inputs the automatic mode leaves worse than the noisy one,
-  // and of those among them that no method of the reference improves either
-  std::string worse_En_names, worse_Ev_names, unimproved_names, over_fixed_names, slow_names;
-  std::size_t unimproved = 0, slow = 0;
+  std::size_t within10 = 0, within25 = 0, fixed_ok = 0, classic_ok = 0, depth = 0, depth_ok = 0, oracle_classic_ok = 0;
+  // the inputs that miss a target; `unimproved`: those worse than the noisy
+  // input that no method of the reference brings below it either
+  Named_inputs worse_En, worse_Ev, unimproved, over_fixed_5, slow;
   for(const Row& r : rows)
   {
     const double best_classic = *std::min_element(r.ref.classic.begin(), r.ref.classic.end());
-    oracle_classic_ok += r.ref.oracle_En <= best_classic;
-    if(r.auto_En > r.noisy_En)
-    {
-      worse_En_names += (worse_En_names.empty() ? " " : ", ") + r.in.name();
-      if(std::min(r.ref.oracle_En, best_classic) > r.noisy_En)
-      {
-        ++unimproved;
-        unimproved_names += (unimproved_names.empty() ? " " : ", ") + r.in.name();
-      }
-    }
-    if(r.auto_Ev > r.noisy_Ev)
-      worse_Ev_names += (worse_Ev_names.empty() ? " " : ", ") + r.in.name();
-    if(r.auto_En > 1.05 * r.fixed_En)
-      over_fixed_names += (over_fixed_names.empty() ? " " : ", ") + r.in.name();
-    if(r.auto_s > 6. * r.fixed_s)
-    {
-      ++slow;
-      slow_names += (slow_names.empty() ? " " : ", ") + r.in.name();
-    }
     vs_oracle.push_back(r.auto_En / r.ref.oracle_En);
     vs_fixed.push_back(r.auto_En / r.fixed_En);
     vs_classic.push_back(r.auto_En / best_classic);
     time_ratio.push_back(r.auto_s / r.fixed_s);
-    worse_En += r.auto_En > r.noisy_En;
-    worse_Ev += r.auto_Ev > r.noisy_Ev;
+    if(r.auto_En > r.noisy_En)
+    {
+      worse_En.add(r.in.name());
+      if(std::min(r.ref.oracle_En, best_classic) > r.noisy_En)
+        unimproved.add(r.in.name());
+    }
+    if(r.auto_Ev > r.noisy_Ev)
+      worse_Ev.add(r.in.name());
     within10 += r.auto_En <= 1.10 * r.ref.oracle_En;
     within25 += r.auto_En <= 1.25 * r.ref.oracle_En;
     fixed_ok += r.auto_En <= r.fixed_En;
-    fixed_5 += r.auto_En <= 1.05 * r.fixed_En;
+    if(!(r.auto_En <= 1.05 * r.fixed_En))
+      over_fixed_5.add(r.in.name());
     classic_ok += r.auto_En <= best_classic;
+    oracle_classic_ok += r.ref.oracle_En <= best_classic;
+    if(r.auto_s > 6. * r.fixed_s)
+      slow.add(r.in.name());
     if(r.in.noise.kind == Noise::DEPTH)
     {
       ++depth;
       depth_ok += r.auto_En < r.fixed_En;
     }
   }
+  const std::size_t fixed_5 = rows.size() - over_fixed_5.count;
   const double n = double(rows.size());
   std::printf("\n### %s: %zu inputs\n\n", group, rows.size());
   std::printf("| ratio | median | 90th percentile | worst |\n|---|---|---|---|\n");
@@ -525,24 +523,25 @@ void summary(const std::vector<Row>& rows, const char* group)
   line("auto / fixed (E_n)", vs_fixed);
   line("auto / best classic default (E_n)", vs_classic);
   line("auto / fixed (seconds)", time_ratio);
-  std::printf("\n- worse than the noisy input: E_n %zu, E_v %zu\n", worse_En, worse_Ev);
-  if(worse_En > 0)
+  std::printf("\n- worse than the noisy input: E_n %zu, E_v %zu\n", worse_En.count, worse_Ev.count);
+  if(worse_En.count > 0)
     std::printf("  - in E_n:%s; of these, %zu that neither the oracle nor any classic default brings below the noisy "
                 "input either:%s\n",
-                worse_En_names.c_str(), unimproved, unimproved == 0 ? " none" : unimproved_names.c_str());
-  if(worse_Ev > 0)
-    std::printf("  - in E_v:%s\n", worse_Ev_names.c_str());
+                worse_En.names.c_str(), unimproved.count, unimproved.count == 0 ? " none" : unimproved.names.c_str());
+  if(worse_Ev.count > 0)
+    std::printf("  - in E_v:%s\n", worse_Ev.names.c_str());
   std::printf("- within 10%% of the oracle: %zu (%.0f%%); within 25%%: %zu (%.0f%%)\n", within10, 100. * within10 / n,
               within25, 100. * within25 / n);
   std::printf("- at least as good as the fixed setting: %zu (%.0f%%); within 5%% of it: %zu (%.0f%%)\n", fixed_ok,
               100. * fixed_ok / n, fixed_5, 100. * fixed_5 / n);
-  if(!over_fixed_names.empty())
-    std::printf("  - more than 5%% worse:%s\n", over_fixed_names.c_str());
+  if(over_fixed_5.count > 0)
+    std::printf("  - more than 5%% worse:%s\n", over_fixed_5.names.c_str());
   std::printf("- no worse than the best classic default: %zu (%.0f%%); the oracle itself (the grid's best setting "
               "per input): %zu (%.0f%%)\n",
               classic_ok, 100. * classic_ok / n, oracle_classic_ok, 100. * oracle_classic_ok / n);
   std::printf("- depth-scan inputs better than the fixed setting: %zu of %zu\n", depth_ok, depth);
-  std::printf("- over 6 times the fixed setting's time: %zu%s%s\n", slow, slow > 0 ? ":" : "", slow_names.c_str());
+  std::printf("- over 6 times the fixed setting's time: %zu%s%s\n", slow.count, slow.count > 0 ? ":" : "",
+              slow.names.c_str());
   std::vector<std::size_t> order(rows.size());
   for(std::size_t i = 0; i < order.size(); ++i)
     order[i] = i;
