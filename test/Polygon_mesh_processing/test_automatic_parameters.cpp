@@ -775,8 +775,8 @@ TEST(SelfCheck, SyntheticCopyShufflesTheResidual)
 }
 
 // The iterations kept for a run of n iterations: n if its error is within
-// the tolerance of the smallest, or else the nearest count that is (below n
-// when the minimum is before it, above when after).
+// the tolerance of the smallest, or else the largest count below n that is;
+// if none is, the count of the smallest error (above n).
 TEST(SelfCheck, IterationsKeptFromTheErrors)
 {
   const double t = D::Selection_rules::self_check_tolerance;
@@ -786,9 +786,13 @@ TEST(SelfCheck, IterationsKeptFromTheErrors)
   EXPECT_EQ(D::self_check_iterations({9., 2., 3., 2.5}, 3), 1u);                 // past the minimum, too far above it
   EXPECT_EQ(D::self_check_iterations({9., 2., 2. * (1. + 0.5 * t), 3.}, 3), 2u); // within the tolerance
   EXPECT_EQ(D::self_check_iterations({9., 2., 2. * (1. + 2. * t)}, 2), 1u);
-  // the copy ran on after n: more iterations are kept only if n is too far above the minimum
+  // the copy ran on after n: more iterations are kept only if n is too far
+  // above the minimum, and then the minimum's count, not the first count
+  // within the tolerance of it
   EXPECT_EQ(D::self_check_iterations({9., 5., 3., 2., 2.5}, 1), 3u);
-  EXPECT_EQ(D::self_check_iterations({9., 5., 2. * (1. + 0.5 * t), 2., 2.5}, 1), 2u);
+  EXPECT_EQ(D::self_check_iterations({9., 5., 2. * (1. + 0.5 * t), 2., 2.5}, 1), 3u);
+  EXPECT_EQ(D::self_check_iterations({9., 5., 2. * (1. + 0.5 * t), 2. * (1. + 0.2 * t), 2., 2.5}, 1), 4u);
+  EXPECT_EQ(D::self_check_iterations({9., 5., 2., 2. * (1. + 0.2 * t), 2., 2.5}, 1), 2u); // the first of equal minima
   EXPECT_EQ(D::self_check_iterations({9., 5., 2. * (1. + 0.5 * t), 2., 2.5}, 2), 2u);
   EXPECT_EQ(D::self_check_iterations({9., 5., 2. * (1. + 0.5 * t), 2., 2.5}, 4), 3u);
 }
@@ -876,13 +880,18 @@ TEST(SelfCheck, ShortenedRunIsThePlainRunWithFewerIterations)
 
 // The self-check lengthens a run: on a noisy plane the kept candidate stops
 // while noise is left (0.75 degrees of E_n after 23 iterations, measured,
-// against 0.15 for the best setting of the corpus grid).
+// against 0.15 for the best setting of the corpus grid), and the copy's
+// smallest angle comes after 45 iterations.
 TEST(SelfCheck, LengthenedRunIsThePlainRunWithMoreIterations)
 {
   const auto [reference, noisy] = reference_and_gaussian_noise("meshes/plane.off", 0.1);
   const auto [r, m] = self_checked_run(noisy, reference, "noisy plane");
   EXPECT_GT(r.iterations, r.candidates[r.chosen_candidate].iterations);
-  EXPECT_GT(r.self_check_errors.size(), std::size_t(r.iterations));
+  ASSERT_GT(r.self_check_errors.size(), std::size_t(r.iterations));
+  // lengthened to the copy's smallest angle, past the first count within the tolerance of it
+  const auto smallest = std::min_element(r.self_check_errors.begin(), r.self_check_errors.end());
+  EXPECT_EQ(r.self_check_errors[r.iterations], *smallest);
+  EXPECT_LE(r.self_check_errors[r.iterations - 1], *smallest * (1. + D::Selection_rules::self_check_tolerance));
   // and the same with one thread
   Mesh sequential = noisy;
   const PMP::Intrinsic_denoising_report s = PMP::intrinsic_denoising<CGAL::Sequential_tag>(sequential);
@@ -893,7 +902,7 @@ TEST(SelfCheck, LengthenedRunIsThePlainRunWithMoreIterations)
 
 // The self-check lengthens a run past the candidates' own limit: on a noisy
 // sphere the kept candidate runs its 40 iterations and the copy keeps coming
-// closer after them (measured: 57 iterations kept, E_n 1.03 -> 0.92 degrees).
+// closer after them (measured: 60 iterations kept, E_n 1.03 -> 0.90 degrees).
 TEST(SelfCheck, LengthensPastTheCandidatesLimit)
 {
   const auto [reference, noisy] = reference_and_gaussian_noise("meshes/larger_sphere.off", 0.2);
@@ -926,8 +935,8 @@ TEST(SelfCheck, StopsWalkingTheRadiiWhereTheCopyComesNoCloser)
 // The self-check takes another radius: on a sphere with strong noise the kept
 // candidate (sigma 1.4, 2d) runs its 40 iterations; on the synthetic copy the
 // same kernel with the 3d paths of another candidate comes more than the
-// tolerance closer (measured: E_n 2.00 degrees with 2d after the self-check
-// of the count alone, 1.50 with 3d).
+// tolerance closer (measured: E_n 2.31 degrees for the candidate, 1.42 with
+// 3d and the 60 iterations the copy asks for, without the relaxation).
 TEST(SelfCheck, TakesAnotherRadiusWhenTheCopyComesCloserWithIt)
 {
   const auto [reference, noisy] = reference_and_gaussian_noise("meshes/larger_sphere.off", 0.5);

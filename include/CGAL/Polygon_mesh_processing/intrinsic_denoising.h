@@ -218,10 +218,10 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
     and on (up to 60 iterations) while the copy keeps coming closer to the
     result. If the copy
     came closer after fewer iterations, or after more (by more than 2%),
-    the input is denoised again with the count nearest to the candidate's
-    whose angle is within 2% of the smallest (`self_check_errors` and the
-    stop reason `SELF_CHECK` in the report); a longer run goes on from the
-    candidate's result. The kept kernel also runs on the copy with the
+    the input is denoised again with the largest smaller count whose angle
+    is within 2% of the smallest, or else with the count of the smallest
+    angle (`self_check_errors` and the stop reason `SELF_CHECK` in the
+    report); a longer run goes on from the candidate's result. The kept kernel also runs on the copy with the
     candidates' other radii (2, 3 and 6 \f$d\f$, those whose paths are still
     held), walked outwards from the candidate's and in each direction only
     while each brings the copy closer than the best so far; if one brings

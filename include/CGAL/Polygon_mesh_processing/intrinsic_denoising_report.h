@@ -118,9 +118,10 @@ struct Intrinsic_denoising_report
   /// normals of that synthetic copy after k iterations of the kept kernel and
   /// those of the result (entry 0: the copy itself). The copy runs at least
   /// as many iterations as the candidate did, and on while its angle falls
-  /// and stays within 2% of the smallest. Of the counts whose entry is within
-  /// 2% of the smallest, the result kept is that of the one nearest to the
-  /// candidate's count (the largest below it or the smallest above it); empty
+  /// and stays within 2% of the smallest. If the candidate's entry is more
+  /// than 2% above the smallest, the result kept is that of the largest
+  /// smaller count within 2% of the smallest, or, if there is none, of the
+  /// count of the smallest entry (a longer run); empty
   /// if the check did not run (the kept candidate ran no iteration, or the
   /// noise was sparse)
   std::vector<double> self_check_errors;
