@@ -94,8 +94,8 @@ struct Selection_rules
   // which checks every count, shortens 52 with 0.02 (24 for the worse, by at
   // most 6.6%); letting it lengthen runs too changes 13 more (11 for the
   // better, 2 for the worse by at most 0.5%), and lengthening to the count
-  // of the smallest rather than to the first count within the tolerance 18
-  // more (14 for the better, 4 for the worse by at most 1.5%).
+  // of the smallest rather than to the first count within the tolerance
+  // changes 18 more (14 for the better, 4 for the worse by at most 1.5%).
   static constexpr double self_check_tolerance = 0.02;
   // The self-check may lengthen the kept run up to this many iterations
   // (the candidates stop at max_iterations). A surface with no shape to lose
@@ -314,6 +314,8 @@ inline unsigned int self_check_iterations(const std::vector<double>& errors, uns
     return 0;
   const auto smallest = std::min_element(errors.begin(), errors.end());
   const double limit = *smallest * (1. + Selection_rules::self_check_tolerance);
+  if(!(limit == limit))
+    return iterations; // a NaN error: no evidence
   const std::size_t last = std::min<std::size_t>(iterations, errors.size() - 1);
   for(std::size_t i = last + 1; i-- > 0;)
     if(errors[i] <= limit)
