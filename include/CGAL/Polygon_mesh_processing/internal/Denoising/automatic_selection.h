@@ -314,7 +314,7 @@ inline unsigned int self_check_iterations(const std::vector<double>& errors, uns
     return 0;
   const auto smallest = std::min_element(errors.begin(), errors.end());
   const double limit = *smallest * (1. + Selection_rules::self_check_tolerance);
-  if(!(limit == limit))
+  if(std::isnan(limit))
     return iterations; // a NaN error: no evidence
   const std::size_t last = std::min<std::size_t>(iterations, errors.size() - 1);
   for(std::size_t i = last + 1; i-- > 0;)
