@@ -500,3 +500,60 @@ TEST(SquarePattern, RenumberedVerticesKeepTheMesh)
       EXPECT_EQ(r.input_vertex[r.triangles[f][k]], m.triangles[f][k]);
   EXPECT_EQ(r.vertex_values_in_input_order(r.points), m.points);
 }
+
+// A geometric neighbourhood holds at most max_neighbors_within() faces: on
+// fandisk none comes near the cap, so the paper's neighbourhoods are
+// unchanged. A plane grid joined with a copy of itself at a thousandth of
+// the scale: the radius (4d, d from both) takes in the whole copy around
+// each of its faces, and there the search halves the squared radius until
+// the neighbourhood fits: a subset of the full one, at most the cap. The
+// faces of the large part keep their neighbourhoods, and the square-pattern
+// forest searched face by face follows the capped neighbourhoods.
+TEST(SquarePattern, NeighbourhoodsAreCappedWhereFacesAreFarSmallerThanAverage)
+{
+  Mesh fandisk;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
+  const Flat_setup<> single(fandisk);
+  const std::size_t single_cap = D::max_neighbors_within(single.r, single.fd);
+  const D::Csr single_nb = D::geometric_neighborhoods<CGAL::Sequential_tag>(single.m, single.fd.centroids, single.r);
+  std::size_t largest = 0;
+  for(std::size_t f = 0; f < single_nb.size(); ++f)
+    largest = std::max<std::size_t>(largest, single_nb.end(f) - single_nb.begin(f));
+  EXPECT_LT(8 * largest, single_cap); // far from the cap
+
+  const Mesh grid = denoising_test::plane_grid<Mesh>(50);
+  const Mesh both = denoising_test::with_scaled_copy(grid, 0.001, 5.);
+  ASSERT_EQ(num_faces(both), 2 * num_faces(grid));
+  const Flat_setup<> setup(both);
+  const std::size_t nf = num_faces(grid);
+  const std::size_t cap = D::max_neighbors_within(setup.r, setup.fd);
+  EXPECT_GE(cap, 256u);
+  EXPECT_LT(cap, nf / 4);
+  const D::Csr full = D::geometric_neighborhoods<CGAL::Parallel_if_available_tag>(setup.m, setup.fd.centroids, setup.r);
+  const D::Csr capped =
+      D::geometric_neighborhoods<CGAL::Parallel_if_available_tag>(setup.m, setup.fd.centroids, setup.r, cap);
+  std::size_t capped_faces = 0;
+  for(std::size_t f = 0; f < 2 * nf; ++f)
+  {
+    const std::vector<std::uint32_t> a(full.items.begin() + full.begin(f), full.items.begin() + full.end(f));
+    const std::vector<std::uint32_t> b(capped.items.begin() + capped.begin(f), capped.items.begin() + capped.end(f));
+    ASSERT_LE(b.size(), cap) << f;
+    if(a.size() <= cap)
+    {
+      ASSERT_EQ(a, b) << f;
+      continue;
+    }
+    ASSERT_GE(f, nf); // only the small copy's faces
+    ++capped_faces;
+    EXPECT_GT(b.size(), 0u);
+    const std::set<std::uint32_t> in_full(a.begin(), a.end());
+    for(std::uint32_t g : b)
+      ASSERT_TRUE(in_full.count(g) == 1) << f;
+  }
+  EXPECT_GT(capped_faces, nf / 2);
+
+  const D::Path_forest within = D::square_pattern_paths_within<CGAL::Sequential_tag>(setup.m, setup.fd, setup.r);
+  const D::Path_forest from_capped = D::square_pattern_paths<CGAL::Sequential_tag>(setup.m, setup.fd, capped);
+  ASSERT_EQ(within.face, from_capped.face);
+  ASSERT_EQ(within.offsets, from_capped.offsets);
+}

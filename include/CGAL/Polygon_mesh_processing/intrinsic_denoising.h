@@ -33,7 +33,11 @@ namespace Polygon_mesh_processing {
 
   For each face \f$i\f$ with unit normal \f$n_i\f$ and neighbourhood
   \f$N_i\f$ (the faces connected to \f$i\f$ through vertices whose centroid is
-  within `neighbor_radius` of \f$c_i\f$),
+  within `neighbor_radius` of \f$c_i\f$; where the faces are so much smaller
+  than on average that more than 16 times the faces a disc of that radius
+  holds at the mean face area (and more than 256) would be taken in, the
+  squared radius is halved until they are not: see the manual's section on
+  robustness),
   \f[ \bar n_i = \frac{1}{W_i}\sum_{j\in N_i} A_j\, g(d^s_{ij};\sigma_s)\, g(d^r_{ij};\sigma_r)\, n_j, \qquad
       g(x;\sigma) = e^{-x^2/2\sigma^2}, \f]
   with, along the path \f$L = (i = x_0, x_1, \dots, x_k = j)\f$ (eq. 9),
@@ -77,7 +81,7 @@ namespace Polygon_mesh_processing {
       \cgalParamDefault{`1`}
     \cgalParamNEnd
     \cgalParamNBegin{neighbor_radius}
-      \cgalParamDescription{the radius \f$r\f$ of the geometric neighbourhood, in the mesh's length unit}
+      \cgalParamDescription{the radius \f$r\f$ of the geometric neighbourhood, in the mesh's length unit (smaller where the faces are far smaller than on average, see above)}
       \cgalParamType{double}
       \cgalParamDefault{`relative_neighbor_radius` times \f$d\f$}
     \cgalParamNEnd

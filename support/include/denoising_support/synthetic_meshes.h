@@ -3,18 +3,21 @@
 //
 // Synthetic test models built from triangle soups: a plane grid, a cube, an
 // octahedron with non-uniform sampling and the 18-edge (hexagonal) prism of
-// the paper's section 5.2. Shared by the tests and the benchmarks.
+// the paper's section 5.2; and a mesh joined with a scaled copy of itself.
+// Shared by the tests and the benchmarks.
 
 #ifndef CGAL_DENOISING_TEST_SYNTHETIC_MESHES_H
 #define CGAL_DENOISING_TEST_SYNTHETIC_MESHES_H
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <map>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 namespace denoising_test {
@@ -203,6 +206,25 @@ template <typename Mesh>
 Mesh benchmark_prism()
 {
   return hexagonal_prism<Mesh>(12, 42, 12);
+}
+
+// `mesh` and a copy of it scaled by `scale` and moved by `shift` along x,
+// as one mesh of twice the connected components (the copy's vertices and
+// faces after those of `mesh`, in the same order).
+template <typename Mesh>
+Mesh with_scaled_copy(const Mesh& mesh, double scale, double shift)
+{
+  Mesh copy = mesh;
+  const auto points = get(CGAL::vertex_point, copy);
+  typedef typename boost::property_traits<std::remove_const_t<decltype(points)>>::value_type Point;
+  for(auto v : vertices(copy))
+  {
+    const Point p = get(points, v);
+    put(points, v, Point(shift + scale * p.x(), scale * p.y(), scale * p.z()));
+  }
+  Mesh both = mesh;
+  CGAL::copy_face_graph(copy, both);
+  return both;
 }
 
 } // namespace denoising_test

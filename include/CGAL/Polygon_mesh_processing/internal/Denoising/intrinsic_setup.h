@@ -197,7 +197,8 @@ Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParam
   }
   {
     // released once the paths are built: they hold everything the iterations need
-    const Csr neighbors = geometric_neighborhoods<ConcurrencyTag>(s.mesh, s.input_faces.centroids, s.radius);
+    const Csr neighbors = geometric_neighborhoods<ConcurrencyTag>(s.mesh, s.input_faces.centroids, s.radius,
+                                                                  max_neighbors_within(s.radius, s.input_faces));
     s.paths = make_paths<ConcurrencyTag>(np, strategy, step_length, d, s.input_faces.centroids,
                                          Face_vertex_adjacency{s.mesh}, neighbors, &s.mesh, &s.input_faces, fname);
   }

@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/face_data.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -85,6 +86,53 @@ inline Csr vertex_adjacency(const Flat_mesh& m)
   return csr;
 }
 
+// No limit on the size of a neighbourhood.
+constexpr std::size_t unlimited_neighbors = std::size_t(-1);
+
+// The mark of a new search in stamp arrays (-1 = never visited): a new
+// value for each search, so that an abandoned search leaves no item marked
+// as visited by the next one; the arrays are cleared when the marks run out.
+template <typename... Stamps>
+std::uint32_t fresh_mark(std::uint32_t& next_mark, Stamps&... stamps)
+{
+  if(next_mark == std::uint32_t(-1))
+  {
+    (std::fill(stamps.begin(), stamps.end(), std::uint32_t(-1)), ...);
+    next_mark = 0;
+  }
+  return next_mark++;
+}
+
+// The largest neighbourhood searched for a face with a radius r: 16 times
+// the number of faces a disc of radius r holds at the mesh's mean face area
+// (and at least 256). A geometric neighbourhood grows with the local density
+// of faces: where the faces are much smaller than on average (a locally
+// refined region, or a connected component modelled at a much finer scale
+// than the rest), a radius set from the mean spacing would take in
+// thousands of faces, each costing a path and a weight at every iteration.
+// There the radius is halved until the neighbourhood holds no more than
+// this; elsewhere (on regular meshes a neighbourhood holds about 2.4 r^2 /
+// d^2 faces, d the mean distance between adjacent centroids) it is the
+// paper's neighbourhood, unchanged.
+inline std::size_t max_neighbors_within(double radius, double mean_face_area)
+{
+  const double pi = 3.14159265358979323846;
+  if(!(mean_face_area > 0.) || !std::isfinite(radius))
+    return unlimited_neighbors;
+  const double faces_in_disc = pi * radius * radius / mean_face_area;
+  const double cap = std::max(256., std::ceil(16. * faces_in_disc));
+  return cap < 1e18 ? std::size_t(cap) : unlimited_neighbors;
+}
+
+// The cap of max_neighbors_within() for the faces of `fd`.
+inline std::size_t max_neighbors_within(double radius, const Face_data& fd)
+{
+  double total = 0.;
+  for(double a : fd.areas)
+    total += a;
+  return max_neighbors_within(radius, fd.areas.empty() ? 0. : total / double(fd.areas.size()));
+}
+
 // Scratch state of a neighbourhood search over n items.
 struct Neighborhood_search
 {
@@ -95,15 +143,38 @@ struct Neighborhood_search
   // item enters the neighbourhood of i, and the search goes on through it, if
   // its position lies within sqrt(r2) of the position of i and it is
   // adjacent to an item already reached. Afterwards queue = {i, neighbours}.
+  // With `max_neighbors`, a search that finds more is abandoned and run
+  // again with the squared radius halved, until it finds no more (or the
+  // radius is 0).
   template <typename Adjacency>
-  void run(std::size_t i, const std::vector<Vec3>& positions, const Adjacency& adjacent, double r2)
+  void run(std::size_t i, const std::vector<Vec3>& positions, const Adjacency& adjacent, double r2,
+           std::size_t max_neighbors = unlimited_neighbors)
+  {
+    while(!search(i, positions, adjacent, r2, max_neighbors))
+    {
+      if(!(r2 > 0.)) // more items than the cap at the very position of i (degenerate faces): take them all
+      {
+        search(i, positions, adjacent, r2, unlimited_neighbors);
+        return;
+      }
+      r2 *= 0.5;
+    }
+  }
+
+private:
+  template <typename Adjacency>
+  bool search(std::size_t i, const std::vector<Vec3>& positions, const Adjacency& adjacent, double r2,
+              std::size_t max_neighbors)
   {
     const Vec3& pi = positions[i];
-    const std::uint32_t mark = std::uint32_t(i);
+    const std::uint32_t mark = fresh_mark(next_mark, stamp);
     queue.clear();
-    queue.push_back(mark);
+    queue.push_back(std::uint32_t(i));
     stamp[i] = mark;
     for(std::size_t q = 0; q < queue.size(); ++q)
+    {
+      if(queue.size() - 1 > max_neighbors)
+        return false;
       adjacent(queue[q], [&](std::uint32_t g) {
         if(stamp[g] == mark)
           return;
@@ -111,7 +182,11 @@ struct Neighborhood_search
         if(squared_norm(positions[g] - pi) <= r2)
           queue.push_back(g);
       });
+    }
+    return queue.size() - 1 <= max_neighbors;
   }
+
+  std::uint32_t next_mark = 0;
 };
 
 // The geometric neighbourhood of a face, searched through the vertices: the
@@ -137,17 +212,36 @@ struct Face_fan_search
   const std::uint32_t* neighbors_begin() const { return queue.data() + 1; }
   const std::uint32_t* neighbors_end() const { return queue.data() + count; }
 
-  void run(std::size_t i, const Flat_mesh& m, const std::vector<Vec3>& centroids, double r2)
+  // With `max_neighbors`, as Neighborhood_search::run.
+  void run(std::size_t i, const Flat_mesh& m, const std::vector<Vec3>& centroids, double r2,
+           std::size_t max_neighbors = unlimited_neighbors)
+  {
+    while(!search(i, m, centroids, r2, max_neighbors))
+    {
+      if(!(r2 > 0.)) // more faces than the cap at the very centroid of i (degenerate faces): take them all
+      {
+        search(i, m, centroids, r2, unlimited_neighbors);
+        return;
+      }
+      r2 *= 0.5;
+    }
+  }
+
+private:
+  bool search(std::size_t i, const Flat_mesh& m, const std::vector<Vec3>& centroids, double r2,
+              std::size_t max_neighbors)
   {
     const Vec3& ci = centroids[i];
-    const std::uint32_t mark = std::uint32_t(i);
+    const std::uint32_t mark = fresh_mark(next_mark, face_stamp, vertex_stamp);
     std::uint32_t* q_out = queue.data();
-    q_out[0] = mark;
+    q_out[0] = std::uint32_t(i);
     count = 1;
     face_stamp[i] = mark;
     for(std::size_t q = 0; q < count; ++q)
       for(std::uint32_t v : m.triangles[q_out[q]])
       {
+        if(count - 1 > max_neighbors)
+          return false;
         if(vertex_stamp[v] == mark)
           continue;
         vertex_stamp[v] = mark;
@@ -163,14 +257,18 @@ struct Face_fan_search
           count += std::size_t(fresh & within);
         }
       }
+    return count - 1 <= max_neighbors;
   }
+
+  std::uint32_t next_mark = 0;
 };
 
 // Neighbours of every item, as Neighborhood_search::run finds them. For
 // faces (positions: centroids; adjacency: shared vertices) this is the
 // geometric neighbourhood of eq. 8.
 template <typename ConcurrencyTag, typename Adjacency>
-Csr geometric_neighborhoods(const std::vector<Vec3>& positions, const Adjacency& adjacent, double radius)
+Csr geometric_neighborhoods(const std::vector<Vec3>& positions, const Adjacency& adjacent, double radius,
+                            std::size_t max_neighbors = unlimited_neighbors)
 {
   const std::size_t n = positions.size();
   const double r2 = radius * radius;
@@ -178,7 +276,7 @@ Csr geometric_neighborhoods(const std::vector<Vec3>& positions, const Adjacency&
   build_lists<ConcurrencyTag>(
       n, csr.offsets, csr.items, [n] { return Neighborhood_search(n); },
       [&](std::size_t i, Neighborhood_search& s, std::vector<std::uint32_t>& out) {
-        s.run(i, positions, adjacent, r2);
+        s.run(i, positions, adjacent, r2, max_neighbors);
         out.insert(out.end(), s.queue.begin() + 1, s.queue.end());
       });
   return csr;
@@ -186,9 +284,10 @@ Csr geometric_neighborhoods(const std::vector<Vec3>& positions, const Adjacency&
 
 // The geometric neighbourhoods of faces.
 template <typename ConcurrencyTag>
-Csr geometric_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>& centroids, double radius)
+Csr geometric_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>& centroids, double radius,
+                            std::size_t max_neighbors = unlimited_neighbors)
 {
-  return geometric_neighborhoods<ConcurrencyTag>(centroids, Face_vertex_adjacency{m}, radius);
+  return geometric_neighborhoods<ConcurrencyTag>(centroids, Face_vertex_adjacency{m}, radius, max_neighbors);
 }
 
 } // namespace Denoising

@@ -237,7 +237,7 @@ Path_forest square_pattern_paths(const Flat_mesh& m, const Face_data& fd, const 
 }
 
 // The same forest for the geometric neighbourhoods of radius `radius`
-// (geometric_neighborhoods()), each face's neighbourhood searched and turned
+// (geometric_neighborhoods(), with the cap of max_neighbors_within()), each face's neighbourhood searched and turned
 // into its tree at once, so that the neighbourhoods of all faces are never
 // held in memory together. Each tree is built in a chunk of the faces, and
 // the chunks are then copied into the forest: without parents (kept as
@@ -253,6 +253,7 @@ Path_forest square_pattern_paths_within(const Flat_mesh& m, const Face_data& fd,
     Square_pattern_scratch tree;
   };
   const double r2 = radius * radius;
+  const std::size_t max_neighbors = max_neighbors_within(radius, fd);
   // the search reaches the faces geometric_neighborhoods() lists, in another
   // order; the trees do not depend on the order (they are sorted)
   return square_pattern_forest<ConcurrencyTag>(
@@ -261,7 +262,7 @@ Path_forest square_pattern_paths_within(const Flat_mesh& m, const Face_data& fd,
         return Scratch{Face_fan_search(m), {}};
       },
       [&](std::size_t i, Scratch& s) {
-        s.search.run(i, m, fd.centroids, r2);
+        s.search.run(i, m, fd.centroids, r2, max_neighbors);
         return std::make_pair(s.search.neighbors_begin(), s.search.neighbors_end());
       });
 }
