@@ -63,17 +63,70 @@ struct Sparse_noise_test
   bool sparse = false; // the noise is on the flagged vertices only
 };
 
-// The test on `result` (a denoised version of `input`, same mesh `m`, vertex
-// order of `m`); `adjacency` is vertex_adjacency(m); vertices with `fixed`
-// set or without an edge are neither tested nor flagged. Sequential, in a
-// fixed order: the result does not depend on the thread count.
-inline Sparse_noise_test sparse_noise_test(const Flat_mesh& m, const Csr& adjacency, const std::vector<Vec3>& input,
-                                           const std::vector<Vec3>& result, const std::vector<char>& fixed)
+// For each vertex, the mean edge length of its connected component (through
+// `adjacency`, vertex_adjacency(m), at the positions `points`) over the
+// mean edge length of the whole mesh; empty if the mesh has one component
+// (every ratio 1). Vertices without an edge get 1.
+inline std::vector<double> component_scales(const Csr& adjacency, const std::vector<Vec3>& points)
 {
-  const std::size_t nv = m.number_of_vertices();
+  const std::size_t nv = adjacency.size();
+  const std::uint32_t none = std::uint32_t(-1);
+  std::vector<std::uint32_t> component(nv, none), stack;
+  std::vector<double> lengths;
+  std::vector<std::size_t> edges;
+  double total_length = 0.;
+  std::size_t total_edges = 0;
+  for(std::size_t seed = 0; seed < nv; ++seed)
+  {
+    if(component[seed] != none || adjacency.begin(seed) == adjacency.end(seed))
+      continue;
+    const std::uint32_t c = std::uint32_t(lengths.size());
+    lengths.push_back(0.);
+    edges.push_back(0);
+    component[seed] = c;
+    stack.assign(1, std::uint32_t(seed));
+    while(!stack.empty())
+    {
+      const std::uint32_t v = stack.back();
+      stack.pop_back();
+      for(std::uint32_t k = adjacency.begin(v); k < adjacency.end(v); ++k)
+      {
+        const std::uint32_t u = adjacency.items[k];
+        if(u > v)
+        {
+          const double l = norm(points[u] - points[v]);
+          lengths[c] += l;
+          ++edges[c];
+          total_length += l;
+          ++total_edges;
+        }
+        if(component[u] == none)
+        {
+          component[u] = c;
+          stack.push_back(u);
+        }
+      }
+    }
+  }
+  if(lengths.size() < 2 || !(total_length > 0.))
+    return std::vector<double>();
+  const double mean = total_length / double(total_edges);
+  std::vector<double> scale(nv, 1.);
+  for(std::size_t v = 0; v < nv; ++v)
+    if(component[v] != none && lengths[component[v]] > 0.)
+      scale[v] = lengths[component[v]] / double(edges[component[v]]) / mean;
+  return scale;
+}
+
+// The test proper, on `input` and `result` in the units they are given in;
+// `normals` are the result's area-weighted vertex normals.
+inline Sparse_noise_test sparse_noise_test_in_units(const Csr& adjacency, const std::vector<Vec3>& input,
+                                                    const std::vector<Vec3>& result, const std::vector<char>& fixed,
+                                                    const std::vector<Vec3>& normals)
+{
+  const std::size_t nv = adjacency.size();
   Sparse_noise_test t;
   t.outlier.assign(nv, 0);
-  const std::vector<Vec3> normals = area_weighted_vertex_normals(m, result);
   std::vector<double> along(nv, 0.), magnitudes;
   std::vector<char> tested(nv, 0);
   for(std::size_t v = 0; v < nv; ++v)
@@ -102,6 +155,32 @@ inline Sparse_noise_test sparse_noise_test(const Flat_mesh& m, const Csr& adjace
                                                    [&t, &tested](std::size_t v) { return tested[v] && !t.outlier[v]; });
   t.sparse = t.outliers > 0 && t.inlier_correlation >= Sparse_noise_rules::min_inlier_correlation;
   return t;
+}
+
+// The test on `result` (a denoised version of `input`, same mesh `m`, vertex
+// order of `m`); `adjacency` is vertex_adjacency(m); vertices with `fixed`
+// set or without an edge are neither tested nor flagged. On a mesh of
+// several connected components, each vertex's residual is read in units of
+// its component's mean edge length over the mesh's (component_scales()): a
+// part modelled at a thousandth of the scale of another has a residual a
+// thousand times smaller, which in the mesh's units would all fall within
+// the threshold and hold the whole part in place as exact. Sequential, in a
+// fixed order: the result does not depend on the thread count.
+inline Sparse_noise_test sparse_noise_test(const Flat_mesh& m, const Csr& adjacency, const std::vector<Vec3>& input,
+                                           const std::vector<Vec3>& result, const std::vector<char>& fixed)
+{
+  const std::vector<Vec3> normals = area_weighted_vertex_normals(m, result);
+  const std::vector<double> scales = component_scales(adjacency, input);
+  if(scales.empty())
+    return sparse_noise_test_in_units(adjacency, input, result, fixed, normals);
+  // the points divided by their component's scale: residuals in its units
+  std::vector<Vec3> scaled_input(input.size()), scaled_result(result.size());
+  for(std::size_t v = 0; v < input.size(); ++v)
+  {
+    scaled_input[v] = (1. / scales[v]) * input[v];
+    scaled_result[v] = (1. / scales[v]) * result[v];
+  }
+  return sparse_noise_test_in_units(adjacency, scaled_input, scaled_result, fixed, normals);
 }
 
 } // namespace Denoising
