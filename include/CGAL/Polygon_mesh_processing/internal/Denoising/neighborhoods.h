@@ -133,6 +133,25 @@ inline std::size_t max_neighbors_within(double radius, const Face_data& fd)
   return max_neighbors_within(radius, fd.areas.empty() ? 0. : total / double(fd.areas.size()));
 }
 
+// Calls `search(r2, max_neighbors)`, which returns false if it found more
+// than `max_neighbors` neighbours, with the squared radius `r2` halved until
+// it returns true. Where more neighbours than the cap lie at the very
+// position searched from (degenerate faces), r2 reaches 0 and the search is
+// run without the cap: it takes them all rather than looping.
+template <typename Search>
+void search_within_cap(double r2, std::size_t max_neighbors, const Search& search)
+{
+  while(!search(r2, max_neighbors))
+  {
+    if(!(r2 > 0.))
+    {
+      search(r2, unlimited_neighbors);
+      return;
+    }
+    r2 *= 0.5;
+  }
+}
+
 // Scratch state of a neighbourhood search over n items.
 struct Neighborhood_search
 {
@@ -150,15 +169,9 @@ struct Neighborhood_search
   void run(std::size_t i, const std::vector<Vec3>& positions, const Adjacency& adjacent, double r2,
            std::size_t max_neighbors = unlimited_neighbors)
   {
-    while(!search(i, positions, adjacent, r2, max_neighbors))
-    {
-      if(!(r2 > 0.)) // more items than the cap at the very position of i (degenerate faces): take them all
-      {
-        search(i, positions, adjacent, r2, unlimited_neighbors);
-        return;
-      }
-      r2 *= 0.5;
-    }
+    search_within_cap(r2, max_neighbors, [&](double r2_try, std::size_t max_try) {
+      return search(i, positions, adjacent, r2_try, max_try);
+    });
   }
 
 private:
@@ -216,15 +229,8 @@ struct Face_fan_search
   void run(std::size_t i, const Flat_mesh& m, const std::vector<Vec3>& centroids, double r2,
            std::size_t max_neighbors = unlimited_neighbors)
   {
-    while(!search(i, m, centroids, r2, max_neighbors))
-    {
-      if(!(r2 > 0.)) // more faces than the cap at the very centroid of i (degenerate faces): take them all
-      {
-        search(i, m, centroids, r2, unlimited_neighbors);
-        return;
-      }
-      r2 *= 0.5;
-    }
+    search_within_cap(r2, max_neighbors,
+                      [&](double r2_try, std::size_t max_try) { return search(i, m, centroids, r2_try, max_try); });
   }
 
 private:
