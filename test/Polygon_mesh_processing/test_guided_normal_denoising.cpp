@@ -4,7 +4,11 @@
 
 #include "classic_test_helpers.h"
 
+#include <cstdint>
+#include <random>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 using namespace classic_test;
 namespace D = PMP::internal::Denoising;
@@ -130,4 +134,40 @@ TEST(GuidedNormalDenoising, FaceNormalMapReceivesUnitFilteredNormals)
   }
   std::printf("ZDZ15, noisy cube: %zu of %zu filtered normals off the axes\n", off_axis, (std::size_t)num_faces(mesh));
   EXPECT_LE(off_axis, 8u);
+}
+
+// The patch's largest normal difference, found without trying every pair
+// where the bound through the mean rules them out, is the largest over
+// every pair, to the bit: on normals scattered over the sphere (little to
+// rule out), concentrated around one direction with a few outliers, all
+// equal (a noise-free fan of slivers), and on a patch of one face.
+TEST(GuidedNormalDenoising, LargestNormalDifferenceIsThatOfEveryPair)
+{
+  std::mt19937 generator(11); // fully specified
+  const auto uniform = [&generator] { return double(generator() % 200001) / 100000. - 1.; };
+  const auto unit = [](D::Vec3 v) { return (1. / D::norm(v)) * v; };
+  std::vector<std::pair<double, std::uint32_t>> scratch;
+  for(int kind = 0; kind < 4; ++kind)
+  {
+    const std::size_t size = kind == 3 ? 1 : 400;
+    std::vector<D::Vec3> normals;
+    for(std::size_t k = 0; k < size; ++k)
+    {
+      if(kind == 0)
+        normals.push_back(unit({uniform(), uniform(), uniform() + 1e-3}));
+      else if(kind == 1)
+        normals.push_back(unit(k % 50 == 0 ? D::Vec3{uniform(), uniform(), uniform() + 1e-3}
+                                           : D::Vec3{0.05 * uniform(), 0.05 * uniform(), 1.}));
+      else
+        normals.push_back({0., 0., 1.});
+    }
+    std::vector<std::uint32_t> patch;
+    for(std::size_t k = 0; k < size; ++k)
+      patch.push_back(std::uint32_t((k * 7) % size)); // not in index order
+    double every_pair = 0.;
+    for(std::size_t x = 0; x < size; ++x)
+      for(std::size_t y = x + 1; y < size; ++y)
+        every_pair = (std::max)(every_pair, D::squared_norm(normals[patch[x]] - normals[patch[y]]));
+    EXPECT_EQ(D::largest_squared_normal_difference(patch, normals, scratch), every_pair) << kind;
+  }
 }

@@ -557,3 +557,69 @@ TEST(SquarePattern, NeighbourhoodsAreCappedWhereFacesAreFarSmallerThanAverage)
   ASSERT_EQ(within.face, from_capped.face);
   ASSERT_EQ(within.offsets, from_capped.offsets);
 }
+
+// Neighbourhoods on a tessellation with fans: a cylinder whose caps are
+// fans of 240 slivers around one vertex each (fan_cylinder()). The faces'
+// lists of geometric_neighborhoods() come from Face_fan_search, which tests
+// the faces around each vertex once per search; they must be those of the
+// plain search that tests every face sharing a vertex with each face
+// reached (Face_vertex_adjacency), in the same order, at several radii, with
+// and without the cap on their size, in the input order and along the
+// Morton curve, and the square-pattern forest searched face by face must
+// follow them. Fandisk is checked too.
+static void expect_same_lists(const D::Csr& a, const D::Csr& b)
+{
+  ASSERT_EQ(a.offsets, b.offsets);
+  ASSERT_EQ(a.items, b.items);
+}
+
+static void expect_fan_search_is_the_plain_search(const D::Flat_mesh& m, const D::Face_data& fd, double r)
+{
+  for(double scale : {0.5, 1., 3.})
+  {
+    const double radius = scale * r;
+    const D::Csr plain =
+        D::geometric_neighborhoods<CGAL::Sequential_tag>(fd.centroids, D::Face_vertex_adjacency{m}, radius);
+    expect_same_lists(D::geometric_neighborhoods<CGAL::Sequential_tag>(m, fd.centroids, radius), plain);
+    expect_same_lists(D::geometric_neighborhoods<CGAL::Parallel_if_available_tag>(m, fd.centroids, radius), plain);
+    const std::size_t cap = 300;
+    expect_same_lists(
+        D::geometric_neighborhoods<CGAL::Sequential_tag>(m, fd.centroids, radius, cap),
+        D::geometric_neighborhoods<CGAL::Sequential_tag>(fd.centroids, D::Face_vertex_adjacency{m}, radius, cap));
+    const D::Path_forest within = D::square_pattern_paths_within<CGAL::Sequential_tag>(m, fd, radius);
+    const D::Path_forest from_lists = D::square_pattern_paths<CGAL::Sequential_tag>(
+        m, fd,
+        D::geometric_neighborhoods<CGAL::Sequential_tag>(m, fd.centroids, radius, D::max_neighbors_within(radius, fd)));
+    ASSERT_EQ(within.face, from_lists.face);
+    ASSERT_EQ(within.offsets, from_lists.offsets);
+  }
+}
+
+TEST(SquarePattern, FanSearchGivesTheListsOfThePlainSearch)
+{
+  const Mesh cylinder = denoising_test::fan_cylinder<Mesh>(240);
+  ASSERT_EQ(num_faces(cylinder), 960u);
+  Mesh noisy = cylinder;
+  CGAL::Polygon_mesh_processing::add_gaussian_noise(noisy, 0.2, CGAL::parameters::random_seed(3));
+  for(const Mesh* mesh : {&cylinder, static_cast<const Mesh*>(&noisy)})
+  {
+    const Flat_setup<> setup(*mesh);
+    std::uint32_t largest_fan = 0;
+    for(std::size_t v = 0; v < setup.m.number_of_vertices(); ++v)
+      largest_fan = std::max(largest_fan, setup.m.vertex_face_offsets[v + 1] - setup.m.vertex_face_offsets[v]);
+    ASSERT_EQ(largest_fan, 240u);
+    expect_fan_search_is_the_plain_search(setup.m, setup.fd, setup.r);
+
+    D::Flat_mesh rm = setup.m;
+    D::Face_data rfd = setup.fd;
+    D::reorder_faces_for_locality<CGAL::Sequential_tag>(rm, rfd);
+    expect_fan_search_is_the_plain_search(rm, rfd, setup.r);
+  }
+
+  Mesh fandisk;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
+  const Flat_setup<> f(fandisk);
+  expect_same_lists(
+      D::geometric_neighborhoods<CGAL::Sequential_tag>(f.m, f.fd.centroids, f.r),
+      D::geometric_neighborhoods<CGAL::Sequential_tag>(f.fd.centroids, D::Face_vertex_adjacency{f.m}, f.r));
+}

@@ -208,6 +208,32 @@ Mesh benchmark_prism()
   return hexagonal_prism<Mesh>(12, 42, 12);
 }
 
+// Cylinder of radius 1 and height `height` around the z axis, tessellated
+// as CAD exports often are: each cap a fan of n triangles around its centre
+// (a vertex of valence n), the side one band of n quads split in two;
+// 4n faces, closed, outward. The caps' slivers and their centres of high
+// valence are the irregular tessellation a geometric neighbourhood search
+// must not scan once per face reached.
+template <typename Mesh>
+Mesh fan_cylinder(int n, double height = 0.5)
+{
+  Soup s;
+  const double pi = 3.14159265358979323846;
+  const P3 bottom = {0., 0., 0.}, top = {0., 0., height};
+  for(int k = 0; k < n; ++k)
+  {
+    const double a0 = 2. * pi * k / n, a1 = 2. * pi * ((k + 1) % n) / n;
+    const P3 p0 = {std::cos(a0), std::sin(a0), 0.}, p1 = {std::cos(a1), std::sin(a1), 0.};
+    const P3 q0 = {p0[0], p0[1], height}, q1 = {p1[0], p1[1], height};
+    s.add_triangle(bottom, p0, p1, {0., 0., -1.});
+    s.add_triangle(top, q0, q1, {0., 0., 1.});
+    const P3 out = {p0[0] + p1[0], p0[1] + p1[1], 0.};
+    s.add_triangle(p0, p1, q1, out);
+    s.add_triangle(p0, q1, q0, out);
+  }
+  return s.to_mesh<Mesh>();
+}
+
 // `mesh` and a copy of it scaled by `scale` and moved by `shift` along x,
 // as one mesh of twice the connected components (the copy's vertices and
 // faces after those of `mesh`, in the same order).

@@ -208,8 +208,11 @@ private:
 // face over a face-to-face adjacency, and no adjacency to build). It reaches
 // exactly the faces Neighborhood_search::run reaches with
 // Face_vertex_adjacency (a face is tested as soon as it shares a vertex with
-// a face reached, and the test depends on its centroid only), in another
-// order. Afterwards queue = {i, neighbours}.
+// a face reached, and the test depends on its centroid only), in the same
+// order (the faces around a vertex already searched are all marked, so
+// skipping it changes nothing): where a vertex has thousands of faces
+// around it (a fan of slivers), they are tested once per search, not once
+// per face reached. Afterwards queue = {i, neighbours}.
 struct Face_fan_search
 {
   std::vector<std::uint32_t> face_stamp, vertex_stamp;
@@ -288,12 +291,22 @@ Csr geometric_neighborhoods(const std::vector<Vec3>& positions, const Adjacency&
   return csr;
 }
 
-// The geometric neighbourhoods of faces.
+// The geometric neighbourhoods of faces: the lists geometric_neighborhoods()
+// gives with Face_vertex_adjacency, in the same order, searched by
+// Face_fan_search.
 template <typename ConcurrencyTag>
 Csr geometric_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>& centroids, double radius,
                             std::size_t max_neighbors = unlimited_neighbors)
 {
-  return geometric_neighborhoods<ConcurrencyTag>(centroids, Face_vertex_adjacency{m}, radius, max_neighbors);
+  const double r2 = radius * radius;
+  Csr csr;
+  build_lists<ConcurrencyTag>(
+      m.number_of_faces(), csr.offsets, csr.items, [&m] { return Face_fan_search(m); },
+      [&](std::size_t i, Face_fan_search& s, std::vector<std::uint32_t>& out) {
+        s.run(i, m, centroids, r2, max_neighbors);
+        out.insert(out.end(), s.neighbors_begin(), s.neighbors_end());
+      });
+  return csr;
 }
 
 } // namespace Denoising

@@ -254,8 +254,7 @@ Path_forest square_pattern_paths_within(const Flat_mesh& m, const Face_data& fd,
   };
   const double r2 = radius * radius;
   const std::size_t max_neighbors = max_neighbors_within(radius, fd);
-  // the search reaches the faces geometric_neighborhoods() lists, in another
-  // order; the trees do not depend on the order (they are sorted)
+  // the search reaches the faces geometric_neighborhoods() lists
   return square_pattern_forest<ConcurrencyTag>(
       m, fd, compact_min_nodes,
       [&m] {
