@@ -349,7 +349,12 @@ void intrinsic_filter(const TriangleMesh& tmesh, const SignalMap& signal, Filter
                  const std::vector<D::Vec3>& normals, const std::vector<double>& measure, const auto& adjacency,
                  double unit) {
     const double radius = D::read_radius(np, fname, unit, D::Intrinsic_defaults::relative_radius);
-    const D::Csr neighbors = D::geometric_neighborhoods<ConcurrencyTag>(positions, adjacency, radius);
+    // on faces, the search that visits the faces around a vertex once (same lists)
+    D::Csr neighbors;
+    if constexpr(on_faces)
+      neighbors = D::geometric_neighborhoods<ConcurrencyTag>(m, positions, radius);
+    else
+      neighbors = D::geometric_neighborhoods<ConcurrencyTag>(positions, adjacency, radius);
     const D::Path_forest paths =
         D::make_paths<ConcurrencyTag>(np, strategy, step_length, unit, positions, adjacency, neighbors,
                                       on_faces ? &m : nullptr, on_faces ? &fd : nullptr, fname);

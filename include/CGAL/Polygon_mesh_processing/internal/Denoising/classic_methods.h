@@ -91,7 +91,10 @@ inline Csr topological_face_neighbors(const Flat_mesh& m, int shared)
 
 // For each vertex v, the faces whose centroid lies within `radius` of v and
 // that are connected to v through faces of that kind (a breadth-first search
-// from v's incident faces through shared vertices).
+// from v's incident faces through shared vertices). The faces around a
+// vertex are visited once per search (a fan of thousands of slivers around
+// one vertex is not visited again for each of its faces reached); visiting
+// them again would find them all marked, so the lists are the same.
 inline Csr vertex_face_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>& points,
                                      const std::vector<Vec3>& centroids, double radius)
 {
@@ -99,7 +102,7 @@ inline Csr vertex_face_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>
   const double r2 = radius * radius;
   Csr csr;
   csr.offsets.assign(nv + 1, 0);
-  std::vector<std::uint32_t> stamp(m.number_of_faces(), std::uint32_t(-1));
+  std::vector<std::uint32_t> stamp(m.number_of_faces(), std::uint32_t(-1)), vertex_stamp(nv, std::uint32_t(-1));
   std::vector<std::uint32_t> queue;
   for(std::uint32_t v = 0; v < nv; ++v)
   {
@@ -112,11 +115,17 @@ inline Csr vertex_face_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>
       if(squared_norm(centroids[g] - p) <= r2)
         queue.push_back(g);
     };
-    for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
-      visit(m.vertex_faces[k]);
-    const Face_vertex_adjacency adjacent{m};
+    auto visit_fan = [&](std::uint32_t w) {
+      if(vertex_stamp[w] == v)
+        return;
+      vertex_stamp[w] = v;
+      for(std::uint32_t k = m.vertex_face_offsets[w]; k < m.vertex_face_offsets[w + 1]; ++k)
+        visit(m.vertex_faces[k]);
+    };
+    visit_fan(v);
     for(std::size_t q = 0; q < queue.size(); ++q)
-      adjacent(queue[q], visit);
+      for(std::uint32_t w : m.triangles[queue[q]])
+        visit_fan(w);
     csr.items.insert(csr.items.end(), queue.begin(), queue.end());
     csr.offsets[v + 1] = std::uint32_t(csr.items.size());
   }
