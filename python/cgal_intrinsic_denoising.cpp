@@ -338,6 +338,8 @@ const char* stop_reason_name(PMP::Intrinsic_stop_reason r)
     return "converged";
   case PMP::Intrinsic_stop_reason::SELF_CHECK:
     return "self_check";
+  case PMP::Intrinsic_stop_reason::SECOND_PASS:
+    return "second_pass";
   case PMP::Intrinsic_stop_reason::RESIDUAL_CORRELATED:
     break;
   }
@@ -379,6 +381,8 @@ py::dict report_dict(const PMP::Intrinsic_denoising_report& r)
   d["chosen_candidate"] = r.chosen_candidate;
   d["inlier_residual_correlation"] = r.inlier_residual_correlation;
   d["outlier_vertices"] = r.outlier_vertices;
+  d["change_angle"] = r.change_angle;
+  d["second_pass_angle"] = r.second_pass_angle;
   d["relaxed_vertices"] = r.relaxed_vertices;
   d["self_check_errors"] = r.self_check_errors;
   d["self_check_radii"] = r.self_check_radii;

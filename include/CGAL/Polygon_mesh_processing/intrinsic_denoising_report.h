@@ -36,7 +36,13 @@ enum class Intrinsic_stop_reason
   /// radius, came closer to the result (see
   /// `Intrinsic_denoising_report::self_check_errors` and
   /// `Intrinsic_denoising_report::self_check_radii`)
-  SELF_CHECK
+  SELF_CHECK,
+  /// the automatic selection's second pass: the kept kernel, run again from
+  /// the result of a short run, changed it by more than half as much as the
+  /// run had changed the input, so the run removed mostly shape, not noise;
+  /// the input is returned unchanged (see
+  /// `Intrinsic_denoising_report::second_pass_angle`)
+  SECOND_PASS
 };
 
 /// \ingroup PMP_denoising_grp
@@ -111,6 +117,17 @@ struct Intrinsic_denoising_report
   /// the denoising moved it; the outliers alone with sparse noise); 0 if it
   /// did not run (see the named parameter `relax_along_surface`)
   std::size_t relaxed_vertices = 0;
+  /// with the automatic selection and dense noise, after a kept run of at
+  /// most 8 iterations: the mean angle in degrees between the face normals
+  /// of the input and those of the run's result (`change_angle`), and
+  /// between those of the result and those of the result after as many
+  /// iterations again of the kept kernel (`second_pass_angle`). A filter
+  /// that removed noise changes its own result little: what it changes there
+  /// is what it would take from a noise-free surface, shape. If the second
+  /// angle is more than half the first, the input is returned unchanged
+  /// (stop reason `Intrinsic_stop_reason::SECOND_PASS`). Both 0 if the
+  /// second pass did not run.
+  double change_angle = 0., second_pass_angle = 0.;
   /// with the automatic selection and dense noise: the self-check of the kept
   /// candidate. Its result is taken for the noise-free surface and given the
   /// noise it removed (the normal components of the residual, shuffled over

@@ -333,6 +333,12 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
       out << "\n";
     }
   }
+  if(r.second_pass_angle > 0.)
+    out << "second pass (the kept kernel again on the result, as many iterations): it turned the normals by "
+        << r.second_pass_angle << " degrees, the run had turned the input's by " << r.change_angle << " degrees: "
+        << (r.stop_reason == Reason::SECOND_PASS ? "over half, so the run removed mostly shape: the input is kept"
+                                                 : "at most half, so the run removed mostly noise: its result is kept")
+        << "\n";
   if(r.noise_level_estimated || r.noise_level > 0. || r.automatic_parameters)
     out << "noise level: " << r.noise_level << " x mean edge length ("
         << (!r.candidates.empty()     ? "residual RMS of the kept candidate"
@@ -347,7 +353,8 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
           : r.stop_reason == Reason::CONVERGED           ? "converged"
           : r.stop_reason == Reason::RESIDUAL_CORRELATED ? "the residual became correlated across edges"
           : r.stop_reason == Reason::SELF_CHECK          ? "the self-check chose the number of iterations or the radius"
-                                                         : "iteration limit");
+          : r.stop_reason == Reason::SECOND_PASS ? "the second pass read the change as shape, not noise: input kept"
+                                                 : "iteration limit");
   if(r.stop_reason != Reason::ITERATION_LIMIT || r.displacement > 0.)
     out << " (RMS displacement " << r.displacement << " x mean edge length)";
   out << "\n";

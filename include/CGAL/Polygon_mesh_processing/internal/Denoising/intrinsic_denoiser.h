@@ -111,6 +111,23 @@ public:
       return outliers_only;
     }
     Candidate_run result = self_check(selection, std::move(runs[best]), kept, constrained);
+    // The second pass (Selection_rules::second_pass_share): if the kept
+    // kernel changes its own short run's result by more than half as much
+    // as that run changed the input, what the run removed was mostly shape,
+    // and the input is kept.
+    if(result.iterations > 0 && result.iterations <= Selection_rules::second_pass_max_iterations)
+    {
+      const std::pair<double, double> angles = selection.second_pass_angles(result, kept.sigma);
+      report_.change_angle = angles.first;
+      report_.second_pass_angle = angles.second;
+      if(angles.second > Selection_rules::second_pass_share * angles.first)
+      {
+        report_.iterations = 0;
+        report_.stop_reason = Intrinsic_stop_reason::SECOND_PASS;
+        report_.displacement = 0.;
+        return selection.run_from_input(kept.sigma, 0);
+      }
+    }
     if(relax_)
       report_.relaxed_vertices = selection.relax(result);
     return result;
