@@ -99,7 +99,11 @@ DESCRIPTION
     only those vertices moving; otherwise the setting runs on a synthetic
     noisy copy of its result (the noise it removed, shuffled over the
     vertices), and if fewer or more iterations recovered the copy better,
-    INPUT is denoised with that many. Last, as the vertex update (eq. 10)
+    INPUT is denoised with that many. A run of at most 8 iterations then
+    runs again, as many, on its own result: if that second pass turns the
+    face normals by more than half as much as the run turned those of
+    INPUT, the run removed mostly shape, not noise, and INPUT is written
+    unchanged. Last, as the vertex update (eq. 10)
     moves vertices along the normals only, each vertex that moved is relaxed
     along the surface (toward the centroid of its faces, in the directions
     its faces leave free: none at a corner, along the crease on an edge), by
