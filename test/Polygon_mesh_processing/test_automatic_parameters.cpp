@@ -1067,6 +1067,10 @@ TEST(SecondPass, NoiseFreeCoarseMeshesAreKeptAsTheyAre)
     EXPECT_GT(r.second_pass_angle, D::Selection_rules::second_pass_share * r.change_angle) << file;
     for(auto v : vertices(m))
       ASSERT_EQ(m.point(v), reference.point(v)) << file;
+    Mesh sequential = reference;
+    const PMP::Intrinsic_denoising_report rs = PMP::intrinsic_denoising<CGAL::Sequential_tag>(sequential);
+    EXPECT_EQ(rs.stop_reason, PMP::Intrinsic_stop_reason::SECOND_PASS) << file;
+    EXPECT_EQ(rs.second_pass_angle, r.second_pass_angle) << file;
   }
 }
 
@@ -1100,6 +1104,13 @@ TEST(SecondPass, AnglesAreThoseOfTheRunAndOfItsContinuation)
   EXPECT_NEAR(r.second_pass_angle, second, 1e-9 * second);
   EXPECT_LE(r.second_pass_angle, D::Selection_rules::second_pass_share * r.change_angle);
   EXPECT_LT(PMP::face_normal_error(m, reference), PMP::face_normal_error(noisy, reference));
+  // the same, bit for bit, with one thread
+  Mesh sequential = noisy;
+  const PMP::Intrinsic_denoising_report rs = PMP::intrinsic_denoising<CGAL::Sequential_tag>(sequential);
+  EXPECT_EQ(rs.change_angle, r.change_angle);
+  EXPECT_EQ(rs.second_pass_angle, r.second_pass_angle);
+  for(auto v : vertices(m))
+    ASSERT_EQ(sequential.point(v), m.point(v));
 
   Mesh f = fandisk();
   PMP::add_gaussian_noise(f, 0.3, CGAL::parameters::random_seed(1));
