@@ -47,6 +47,14 @@ const Mesh& fandisk()
   return m;
 }
 
+// CGAL's fandisk with Gaussian noise of sigma_E `sigma`, seed 1.
+Mesh fandisk_with_gaussian_noise(double sigma)
+{
+  Mesh m = fandisk();
+  PMP::add_gaussian_noise(m, sigma, CGAL::parameters::random_seed(1));
+  return m;
+}
+
 // Denoises `input` in the automatic mode with one thread, checks that the
 // result is `result` (a run with the default concurrency), vertex for
 // vertex, and returns the report for the caller's checks.
@@ -712,8 +720,7 @@ TEST(SparseNoise, ImpulsiveNoiseMovesOnlyTheOutliers)
   EXPECT_EQ(s.outlier_vertices, r.outlier_vertices);
   EXPECT_EQ(s.inlier_residual_correlation, r.inlier_residual_correlation);
 
-  Mesh gaussian = fandisk();
-  PMP::add_gaussian_noise(gaussian, 0.3, CGAL::parameters::random_seed(1));
+  Mesh gaussian = fandisk_with_gaussian_noise(0.3);
   const PMP::Intrinsic_denoising_report g = PMP::intrinsic_denoising(gaussian);
   EXPECT_EQ(g.outlier_vertices, 0u);
   EXPECT_GT(g.relaxed_vertices, 0u); // dense noise: relaxed along the surface after the last iteration
@@ -1119,8 +1126,7 @@ TEST(SecondPass, AnglesAreThoseOfTheRunAndOfItsContinuation)
   EXPECT_EQ(rs.change_angle, r.change_angle);
   EXPECT_EQ(rs.second_pass_angle, r.second_pass_angle);
 
-  Mesh f = fandisk();
-  PMP::add_gaussian_noise(f, 0.3, CGAL::parameters::random_seed(1));
+  Mesh f = fandisk_with_gaussian_noise(0.3);
   const PMP::Intrinsic_denoising_report rf = PMP::intrinsic_denoising(f);
   EXPECT_GT(rf.iterations, D::Selection_rules::second_pass_max_iterations);
   EXPECT_EQ(rf.change_angle, 0.);
