@@ -694,8 +694,6 @@ void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool 
   }
 }
 
-} // namespace
-
 // --noise-free: see the usage at the top. Every mesh of `inputs` once.
 void noise_free_study(const std::vector<Input>& inputs, std::FILE* results)
 {
@@ -740,6 +738,8 @@ void noise_free_study(const std::vector<Input>& inputs, std::FILE* results)
               changes.size(), quantile(changes, 0.5), quantile(changes, 0.9), quantile(changes, 1.),
               std::size_t(std::count(changes.begin(), changes.end(), 0.)), moved.count, moved.names.c_str());
 }
+
+} // namespace
 
 int main(int argc, char** argv)
 {
