@@ -15,7 +15,8 @@
 //   corpus_benchmark [--reference FILE] [--results OUT]
 //       the everyday run: automatic mode and fixed setting on every input,
 //       compared with FILE's figures; prints one row an input and the
-//       distributions; writes the rows to OUT (tab-separated).
+//       distributions (regular meshes, irregular meshes, all inputs); writes
+//       the rows to OUT (tab-separated).
 //   --stride N --offset M  only inputs M, M+N, M+2N, ... (quick looks)
 //   --only TEXT            only inputs whose name contains TEXT
 //   corpus_benchmark --candidates
@@ -535,14 +536,14 @@ void summary(const std::vector<Row>& rows, const char* group)
                 worse_En.names.c_str(), unimproved.count, unimproved.count == 0 ? " none" : unimproved.names.c_str());
   if(worse_Ev.count > 0)
     std::printf("  - in E_v:%s\n", worse_Ev.names.c_str());
-  std::printf("- within 10%% of the oracle: %zu (%.0f%%); within 25%%: %zu (%.0f%%)\n", within10, 100. * within10 / n,
+  std::printf("- within 10%% of the oracle: %zu (%.1f%%); within 25%%: %zu (%.1f%%)\n", within10, 100. * within10 / n,
               within25, 100. * within25 / n);
-  std::printf("- at least as good as the fixed setting: %zu (%.0f%%); within 5%% of it: %zu (%.0f%%)\n", fixed_ok,
+  std::printf("- at least as good as the fixed setting: %zu (%.1f%%); within 5%% of it: %zu (%.1f%%)\n", fixed_ok,
               100. * fixed_ok / n, fixed_5, 100. * fixed_5 / n);
   if(over_fixed_5.count > 0)
     std::printf("  - more than 5%% worse:%s\n", over_fixed_5.names.c_str());
-  std::printf("- no worse than the best classic default: %zu (%.0f%%); the oracle itself (the grid's best setting "
-              "per input): %zu (%.0f%%)\n",
+  std::printf("- no worse than the best classic default: %zu (%.1f%%); the oracle itself (the grid's best setting "
+              "per input): %zu (%.1f%%)\n",
               classic_ok, 100. * classic_ok / n, oracle_classic_ok, 100. * oracle_classic_ok / n);
   std::printf("- depth-scan inputs better than the fixed setting: %zu of %zu\n", depth_ok, depth);
   std::printf("- over 6 times the fixed setting's time: %zu%s%s\n", slow.count, slow.count > 0 ? ":" : "",
@@ -934,5 +935,8 @@ int main(int argc, char** argv)
     std::printf("\n%zu inputs have no reference figures (run --build-reference)\n", missing);
   summary(regular, "regular meshes");
   summary(irregular, "irregular meshes (longest edge over 50 times the shortest)");
+  std::vector<Row> all = regular;
+  all.insert(all.end(), irregular.begin(), irregular.end());
+  summary(all, "all inputs");
   return 0;
 }
