@@ -16,7 +16,9 @@
 //       the everyday run: automatic mode and fixed setting on every input,
 //       compared with FILE's figures; prints one row an input and the
 //       distributions (regular meshes, irregular meshes, all inputs); writes
-//       the rows to OUT (tab-separated).
+//       the rows to OUT (tab-separated). Each mesh's noise depends on its
+//       place in the sorted list of meshes, so the run stops, naming them, if
+//       the meshes of the directory and those of FILE differ.
 //   --stride N --offset M  only inputs M, M+N, M+2N, ... (quick looks)
 //   --only TEXT            only inputs whose name contains TEXT
 //   corpus_benchmark --candidates
@@ -70,6 +72,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <set>
@@ -449,6 +452,23 @@ std::map<std::string, Reference> read_reference(const std::string& file)
       refs[mesh + "\t" + noise + "\t" + s] = r;
   }
   return refs;
+}
+
+// The differences between the corpus meshes (corpus_meshes()) and the meshes
+// of `refs`: the file names in one and not in the other. Each mesh's noise
+// depends on its place in the sorted list, so a file added to the meshes
+// directory (a denoised output saved beside its input, say) or missing from
+// it gives every mesh after it other inputs than those of the reference.
+std::vector<std::string> meshes_unlike_reference(const std::map<std::string, Reference>& refs)
+{
+  std::set<std::string> known, present;
+  for(const auto& r : refs)
+    known.insert(r.first.substr(0, r.first.find('\t')));
+  for(const Corpus_mesh& m : corpus_meshes())
+    present.insert(m.file);
+  std::vector<std::string> differ;
+  std::set_symmetric_difference(known.begin(), known.end(), present.begin(), present.end(), std::back_inserter(differ));
+  return differ;
 }
 
 double quantile(std::vector<double> v, double q)
@@ -869,6 +889,21 @@ int main(int argc, char** argv)
   }
 
   const std::map<std::string, Reference> refs = read_reference(reference_file);
+  if(!refs.empty())
+  {
+    const std::vector<std::string> differ = meshes_unlike_reference(refs);
+    if(!differ.empty())
+    {
+      std::cerr << "corpus_benchmark: the corpus meshes of " << meshes_dir() << " and those of the reference "
+                << reference_file << " differ (in one and not in the other):";
+      for(const std::string& f : differ)
+        std::cerr << " " << f;
+      std::cerr << "\nThe noise of each mesh depends on its place in the sorted list of meshes, so every mesh after "
+                   "them would get other inputs than the reference's. Restore the directory, or rebuild the "
+                   "reference (--build-reference).\n";
+      return 1;
+    }
+  }
   std::FILE* results = results_file.empty() ? nullptr : std::fopen(results_file.c_str(), "w");
   if(results)
     std::fprintf(results, "# mesh\tnoise\tseed\tgroup\tnoisy_En\toracle_En\tauto_En\tfixed_En\tbest_classic_En\t"
