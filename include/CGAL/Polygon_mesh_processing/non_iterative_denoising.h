@@ -56,7 +56,7 @@ struct Robust_projection_filter
   {
     const std::vector<Vec3>& p = mesh.points;
     const double sigma_m = 0.5 * sigma_f;
-    const Csr near = vertex_face_neighborhoods(mesh, p, fd.centroids, 2. * sigma_m);
+    const Csr near = vertex_face_neighborhoods<ConcurrencyTag>(mesh, p, fd.centroids, 2. * sigma_m);
     for_each_chunk<ConcurrencyTag>(p.size(), [&](std::size_t b, std::size_t e) {
       for(std::size_t v = b; v < e; ++v)
       {
@@ -78,7 +78,7 @@ struct Robust_projection_filter
   {
     const std::vector<Vec3>& p = mesh.points;
     const std::vector<Vec3>& nq = mollified_faces.normals;
-    const Csr near = vertex_face_neighborhoods(mesh, p, fd.centroids, 2. * sigma_f);
+    const Csr near = vertex_face_neighborhoods<ConcurrencyTag>(mesh, p, fd.centroids, 2. * sigma_f);
     for_each_chunk<ConcurrencyTag>(p.size(), [&](std::size_t b, std::size_t e) {
       for(std::size_t v = b; v < e; ++v)
       {

@@ -91,44 +91,20 @@ inline Csr topological_face_neighbors(const Flat_mesh& m, int shared)
 
 // For each vertex v, the faces whose centroid lies within `radius` of v and
 // that are connected to v through faces of that kind (a breadth-first search
-// from v's incident faces through shared vertices). The faces around a
-// vertex are visited once per search (a fan of thousands of slivers around
-// one vertex is not visited again for each of its faces reached); visiting
-// them again would find them all marked, so the lists are the same.
-inline Csr vertex_face_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>& points,
-                                     const std::vector<Vec3>& centroids, double radius)
+// from v's incident faces through shared vertices:
+// Face_fan_search::run_from_vertex()). The lists do not depend on the tag.
+template <typename ConcurrencyTag>
+Csr vertex_face_neighborhoods(const Flat_mesh& m, const std::vector<Vec3>& points, const std::vector<Vec3>& centroids,
+                              double radius)
 {
-  const std::size_t nv = m.number_of_vertices();
   const double r2 = radius * radius;
   Csr csr;
-  csr.offsets.assign(nv + 1, 0);
-  std::vector<std::uint32_t> stamp(m.number_of_faces(), std::uint32_t(-1)), vertex_stamp(nv, std::uint32_t(-1));
-  std::vector<std::uint32_t> queue;
-  for(std::uint32_t v = 0; v < nv; ++v)
-  {
-    queue.clear();
-    const Vec3& p = points[v];
-    auto visit = [&](std::uint32_t g) {
-      if(stamp[g] == v)
-        return;
-      stamp[g] = v;
-      if(squared_norm(centroids[g] - p) <= r2)
-        queue.push_back(g);
-    };
-    auto visit_fan = [&](std::uint32_t w) {
-      if(vertex_stamp[w] == v)
-        return;
-      vertex_stamp[w] = v;
-      for(std::uint32_t k = m.vertex_face_offsets[w]; k < m.vertex_face_offsets[w + 1]; ++k)
-        visit(m.vertex_faces[k]);
-    };
-    visit_fan(v);
-    for(std::size_t q = 0; q < queue.size(); ++q)
-      for(std::uint32_t w : m.triangles[queue[q]])
-        visit_fan(w);
-    csr.items.insert(csr.items.end(), queue.begin(), queue.end());
-    csr.offsets[v + 1] = std::uint32_t(csr.items.size());
-  }
+  build_lists<ConcurrencyTag>(
+      m.number_of_vertices(), csr.offsets, csr.items, [&m] { return Face_fan_search(m); },
+      [&](std::size_t v, Face_fan_search& s, std::vector<std::uint32_t>& out) {
+        s.run_from_vertex(std::uint32_t(v), m, centroids, points[v], r2);
+        out.insert(out.end(), s.found_begin(), s.found_end());
+      });
   return csr;
 }
 

@@ -227,6 +227,9 @@ struct Face_fan_search
 
   const std::uint32_t* neighbors_begin() const { return queue.data() + 1; }
   const std::uint32_t* neighbors_end() const { return queue.data() + count; }
+  // after run_from_vertex(): the faces found
+  const std::uint32_t* found_begin() const { return queue.data(); }
+  const std::uint32_t* found_end() const { return queue.data() + count; }
 
   // With `max_neighbors`, as Neighborhood_search::run.
   void run(std::size_t i, const Flat_mesh& m, const std::vector<Vec3>& centroids, double r2,
@@ -236,37 +239,66 @@ struct Face_fan_search
                       [&](double r2_try, std::size_t max_try) { return search(i, m, centroids, r2_try, max_try); });
   }
 
+  // The faces around a point instead: those whose centroid lies within
+  // sqrt(r2) of `center` (the position of vertex v), reached from the faces
+  // around v through shared vertices, in queue[0 .. count) (v's own faces
+  // too only if within).
+  void run_from_vertex(std::uint32_t v, const Flat_mesh& m, const std::vector<Vec3>& centroids, const Vec3& center,
+                       double r2)
+  {
+    const std::uint32_t mark = fresh_mark(next_mark, face_stamp, vertex_stamp);
+    count = 0;
+    scan_fan(v, m, centroids, center, r2, mark);
+    expand(m, centroids, center, r2, mark, 0, unlimited_neighbors);
+  }
+
 private:
   bool search(std::size_t i, const Flat_mesh& m, const std::vector<Vec3>& centroids, double r2,
               std::size_t max_neighbors)
   {
-    const Vec3& ci = centroids[i];
     const std::uint32_t mark = fresh_mark(next_mark, face_stamp, vertex_stamp);
-    std::uint32_t* q_out = queue.data();
-    q_out[0] = std::uint32_t(i);
+    queue[0] = std::uint32_t(i);
     count = 1;
     face_stamp[i] = mark;
+    return expand(m, centroids, centroids[i], r2, mark, 1, max_neighbors);
+  }
+
+  // The breadth-first search from the faces queued (the first `seeds` of
+  // them not neighbours), through the fans of their vertices; false if
+  // more than `max_neighbors` are found.
+  bool expand(const Flat_mesh& m, const std::vector<Vec3>& centroids, const Vec3& center, double r2, std::uint32_t mark,
+              std::size_t seeds, std::size_t max_neighbors)
+  {
     for(std::size_t q = 0; q < count; ++q)
-      for(std::uint32_t v : m.triangles[q_out[q]])
+      for(std::uint32_t v : m.triangles[queue[q]])
       {
-        if(count - 1 > max_neighbors)
+        if(count - seeds > max_neighbors)
           return false;
-        if(vertex_stamp[v] == mark)
-          continue;
-        vertex_stamp[v] = mark;
-        // branch-free: whether a face is new and within the radius is
-        // unpredictable, so it is written anyway and counted only if both
-        for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
-        {
-          const std::uint32_t g = m.vertex_faces[k];
-          const bool fresh = face_stamp[g] != mark;
-          face_stamp[g] = mark;
-          const bool within = squared_norm(centroids[g] - ci) <= r2;
-          q_out[count] = g;
-          count += std::size_t(fresh & within);
-        }
+        scan_fan(v, m, centroids, center, r2, mark);
       }
-    return count - 1 <= max_neighbors;
+    return count - seeds <= max_neighbors;
+  }
+
+  // Queues the faces around vertex v not yet reached whose centroid is within
+  // the radius, unless v's fan has been scanned in this search.
+  void scan_fan(std::uint32_t v, const Flat_mesh& m, const std::vector<Vec3>& centroids, const Vec3& center, double r2,
+                std::uint32_t mark)
+  {
+    if(vertex_stamp[v] == mark)
+      return;
+    vertex_stamp[v] = mark;
+    std::uint32_t* q_out = queue.data();
+    // branch-free: whether a face is new and within the radius is
+    // unpredictable, so it is written anyway and counted only if both
+    for(std::uint32_t k = m.vertex_face_offsets[v]; k < m.vertex_face_offsets[v + 1]; ++k)
+    {
+      const std::uint32_t g = m.vertex_faces[k];
+      const bool fresh = face_stamp[g] != mark;
+      face_stamp[g] = mark;
+      const bool within = squared_norm(centroids[g] - center) <= r2;
+      q_out[count] = g;
+      count += std::size_t(fresh & within);
+    }
   }
 
   std::uint32_t next_mark = 0;
