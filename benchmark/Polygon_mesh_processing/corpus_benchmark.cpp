@@ -161,11 +161,11 @@ std::vector<Corpus_mesh> corpus_meshes()
   return out;
 }
 
-std::vector<Input> corpus_inputs()
+// The inputs of `meshes` (corpus_meshes()).
+std::vector<Input> corpus_inputs(const std::vector<Corpus_mesh>& meshes)
 {
   const double levels[5] = {0.1, 0.2, 0.3, 0.5, 0.7};
   std::vector<Input> inputs;
-  const std::vector<Corpus_mesh> meshes = corpus_meshes();
   for(std::size_t i = 0; i < meshes.size(); ++i)
   {
     char buf[64];
@@ -454,17 +454,18 @@ std::map<std::string, Reference> read_reference(const std::string& file)
   return refs;
 }
 
-// The differences between the corpus meshes (corpus_meshes()) and the meshes
-// of `refs`: the file names in one and not in the other. Each mesh's noise
+// The differences between the corpus meshes `meshes` (corpus_meshes()) and
+// the meshes of `refs`: the file names in one and not in the other. Each mesh's noise
 // depends on its place in the sorted list, so a file added to the meshes
 // directory (a denoised output saved beside its input, say) or missing from
 // it gives every mesh after it other inputs than those of the reference.
-std::vector<std::string> meshes_unlike_reference(const std::map<std::string, Reference>& refs)
+std::vector<std::string> meshes_unlike_reference(const std::map<std::string, Reference>& refs,
+                                                 const std::vector<Corpus_mesh>& meshes)
 {
   std::set<std::string> known, present;
   for(const auto& r : refs)
     known.insert(r.first.substr(0, r.first.find('\t')));
-  for(const Corpus_mesh& m : corpus_meshes())
+  for(const Corpus_mesh& m : meshes)
     present.insert(m.file);
   std::vector<std::string> differ;
   std::set_symmetric_difference(known.begin(), known.end(), present.begin(), present.end(), std::back_inserter(differ));
@@ -812,9 +813,10 @@ int main(int argc, char** argv)
       return 2;
     }
   }
+  const std::vector<Corpus_mesh> meshes = corpus_meshes(); // each file read once
   std::vector<Input> inputs;
   {
-    const std::vector<Input> all = corpus_inputs();
+    const std::vector<Input> all = corpus_inputs(meshes);
     for(std::size_t i = offset; i < all.size(); i += stride)
       if(only.empty() || all[i].name().find(only) != std::string::npos)
         inputs.push_back(all[i]);
@@ -891,7 +893,7 @@ int main(int argc, char** argv)
   const std::map<std::string, Reference> refs = read_reference(reference_file);
   if(!refs.empty())
   {
-    const std::vector<std::string> differ = meshes_unlike_reference(refs);
+    const std::vector<std::string> differ = meshes_unlike_reference(refs, meshes);
     if(!differ.empty())
     {
       std::cerr << "corpus_benchmark: the corpus meshes of " << meshes_dir() << " and those of the reference "
