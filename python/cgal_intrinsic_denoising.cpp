@@ -754,6 +754,16 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       "Gaussian noise along the vertex normals, standard deviation sigma times the mean edge length (the paper's "
       "sigma_E), seeded (add_gaussian_noise()). Returns the new V.");
   m.def(
+      "add_isotropic_gaussian_noise",
+      [](const py::handle& V, const py::handle& F, double sigma, long long seed, const py::object& constrained) {
+        return add_noise(V, F, seed, constrained,
+                         [sigma](Mesh& mesh, const auto& np) { PMP::add_isotropic_gaussian_noise(mesh, sigma, np); });
+      },
+      py::arg("V"), py::arg("F"), py::arg("sigma"), py::kw_only(), py::arg("seed") = 0,
+      py::arg("constrained") = py::none(),
+      "Gaussian noise in random directions: three independent coordinates, the RMS length of the moves sigma times "
+      "the mean edge length, seeded (add_isotropic_gaussian_noise()). Returns the new V.");
+  m.def(
       "add_impulsive_noise",
       [](const py::handle& V, const py::handle& F, double fraction, double sigma, long long seed,
          const py::object& constrained) {

@@ -1,4 +1,4 @@
-// Tests of add_gaussian_noise(), add_impulsive_noise() and add_depth_scan_noise().
+// Tests of add_gaussian_noise(), add_impulsive_noise(), add_isotropic_gaussian_noise() and add_depth_scan_noise().
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
@@ -152,4 +152,55 @@ TEST(AddNoise, DepthScanNoiseAlongRaysFromOneCamera)
   EXPECT_THROW(PMP::add_depth_scan_noise(d, -0.1), std::invalid_argument);
   EXPECT_THROW(PMP::add_depth_scan_noise(d, std::nan("")), std::invalid_argument);
   EXPECT_EQ(d_before, positions(d));
+}
+
+// Isotropic noise: seeded and the same for Surface_mesh and Polyhedron_3;
+// the RMS length of the moves is sigma_E times the mean edge length, a third
+// of it (in energy) along each axis, so two thirds along a plane's surface;
+// a constrained vertex does not move and the others get the same noise as
+// without the constraint; bad sigma throws and leaves the mesh.
+TEST(AddNoise, IsotropicNoiseHasTheRelativeRmsAndNoPreferredDirection)
+{
+  Mesh mesh = denoising_test::plane_grid<Mesh>(40), other = mesh, same = mesh;
+  const auto before = positions(mesh);
+  const double mean_edge = mean_edge_length(mesh);
+  PMP::add_isotropic_gaussian_noise(mesh, 0.2, CGAL::parameters::random_seed(4));
+  PMP::add_isotropic_gaussian_noise(same, 0.2, CGAL::parameters::random_seed(4));
+  PMP::add_isotropic_gaussian_noise(other, 0.2, CGAL::parameters::random_seed(5));
+  const auto after = positions(mesh);
+  EXPECT_EQ(after, positions(same));
+  EXPECT_NE(after, positions(other));
+  Polyhedron p = denoising_test::plane_grid<Polyhedron>(40);
+  PMP::add_isotropic_gaussian_noise(p, 0.2, CGAL::parameters::random_seed(4));
+  EXPECT_EQ(after, positions(p));
+
+  double axis2[3] = {0., 0., 0.};
+  for(std::size_t i = 0; i < after.size(); ++i)
+  {
+    const K::Vector_3 d = after[i] - before[i];
+    for(int c = 0; c < 3; ++c)
+      axis2[c] += d[c] * d[c];
+  }
+  const double n = double(after.size()), total = axis2[0] + axis2[1] + axis2[2];
+  // 3 x 1681 samples: within 5% of sigma in RMS, each axis within 10% of a third
+  EXPECT_NEAR(std::sqrt(total / n), 0.2 * mean_edge, 0.05 * 0.2 * mean_edge);
+  for(int c = 0; c < 3; ++c)
+    EXPECT_NEAR(axis2[c] / total, 1. / 3., 0.1 / 3.);
+
+  Mesh pinned = denoising_test::plane_grid<Mesh>(40);
+  auto constrained = pinned.add_property_map<Mesh::Vertex_index, bool>("v:pinned", false).first;
+  const Mesh::Vertex_index v0(7);
+  put(constrained, v0, true);
+  PMP::add_isotropic_gaussian_noise(pinned, 0.2,
+                                    CGAL::parameters::random_seed(4).vertex_is_constrained_map(constrained));
+  const auto pinned_after = positions(pinned);
+  for(std::size_t i = 0; i < after.size(); ++i)
+    EXPECT_EQ(pinned_after[i], i == 7 ? before[i] : after[i]);
+
+  const auto unchanged = positions(other);
+  EXPECT_THROW(PMP::add_isotropic_gaussian_noise(other, -0.1), std::invalid_argument);
+  EXPECT_THROW(PMP::add_isotropic_gaussian_noise(other, std::nan("")), std::invalid_argument);
+  EXPECT_EQ(unchanged, positions(other));
+  Mesh empty;
+  EXPECT_NO_THROW(PMP::add_isotropic_gaussian_noise(empty, 0.3));
 }

@@ -351,7 +351,8 @@ def test_noise_models_are_seeded(noisy):
     V, F = cube(6)
     for make in (lambda s: dn.add_gaussian_noise(V, F, 0.2, seed=s),
                  lambda s: dn.add_impulsive_noise(V, F, 0.1, 1.0, seed=s),
-                 lambda s: dn.add_depth_scan_noise(V, F, 0.2, seed=s)):
+                 lambda s: dn.add_depth_scan_noise(V, F, 0.2, seed=s),
+                 lambda s: dn.add_isotropic_gaussian_noise(V, F, 0.2, seed=s)):
         a, b, c = make(4), make(4), make(5)
         assert np.array_equal(a, b) and not np.array_equal(a, c) and not np.array_equal(a, V)
     moved = np.linalg.norm(dn.add_impulsive_noise(V, F, 0.1, 1.0, seed=4) - V, axis=1) > 0

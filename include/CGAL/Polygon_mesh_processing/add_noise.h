@@ -4,8 +4,9 @@
 // Seeded, reproducible noise for evaluating denoisers: as in section 5.2 of
 // the intrinsic filter paper, vertices moved along their normals by Gaussian
 // noise of standard deviation sigma_E times the mean edge length (on every
-// vertex or on a random fraction of them); and a simulation of a range
-// scanner's noise, along the rays from a virtual camera.
+// vertex or on a random fraction of them); Gaussian noise in random
+// directions; and a simulation of a range scanner's noise, along the rays
+// from a virtual camera.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_ADD_NOISE_H
 #define CGAL_POLYGON_MESH_PROCESSING_ADD_NOISE_H
@@ -78,6 +79,32 @@ void add_noise_along_normals(TriangleMesh& tmesh, double relative_sigma, double 
     const double amount = sigma * gaussian();
     if(selected && !fixed[v])
       m.points[v] = m.points[v] + amount * normals[v];
+  }
+  maps.write_points(tmesh, m.points);
+}
+
+// Isotropic Gaussian noise (see add_isotropic_gaussian_noise()): each vertex
+// moves by a vector of three independent Gaussian coordinates of standard
+// deviation relative_sigma / sqrt(3) mean edge lengths, so that the RMS
+// length of the moves is relative_sigma mean edge lengths, as along normals.
+template <typename TriangleMesh, typename NamedParameters>
+void add_isotropic_noise(TriangleMesh& tmesh, double relative_sigma, const NamedParameters& np, const char* fname)
+{
+  if(faces(tmesh).empty())
+    return;
+  require_non_negative(relative_sigma, fname, "the noise level");
+  const Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
+  const std::uint64_t seed = parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u);
+  Flat_mesh m = maps.flat(tmesh, fname);
+  const std::vector<char> fixed = maps.constrained(tmesh);
+  const double sigma = relative_sigma * mean_edge_length(m) / std::sqrt(3.);
+  Seeded_gaussian gaussian(seed);
+  for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
+  {
+    // drawn for every vertex, fixed or not (as along normals)
+    const double x = gaussian(), y = gaussian(), z = gaussian();
+    if(!fixed[v])
+      m.points[v] = m.points[v] + sigma * Vec3{x, y, z};
   }
   maps.write_points(tmesh, m.points);
 }
@@ -237,6 +264,37 @@ void add_impulsive_noise(TriangleMesh& tmesh, double fraction, double relative_s
                          const NamedParameters& np = parameters::default_values())
 {
   internal::Denoising::add_noise_along_normals(tmesh, relative_sigma, fraction, np, "add_impulsive_noise()");
+}
+
+/*!
+  \ingroup PMP_denoising_grp
+
+  \brief isotropic Gaussian noise: every vertex of `tmesh` moves by a random
+  vector whose three coordinates are independent Gaussians of standard
+  deviation `relative_sigma` / \f$\sqrt{3}\f$ times the mean edge length, in
+  a direction that is uniformly distributed.
+
+  The root mean square length of the moves is `relative_sigma` times the mean
+  edge length, as with `add_gaussian_noise()`, but only a third of their
+  energy is along the normal on average: the rest moves vertices along the
+  surface, which scrambles small and thin triangles. Some publications add
+  noise this way rather than along the normals. Seeded and reproducible like
+  `add_gaussian_noise()`, with the same named parameters.
+
+  \tparam TriangleMesh a model of `VertexListGraph` and `FaceListGraph`
+  \tparam NamedParameters a sequence of named parameters
+  \param tmesh the triangle mesh to make noisy; its vertex points are overwritten
+  \param relative_sigma the root mean square length of the moves, as a multiple of the mean edge length of `tmesh`
+                        before the noise is added
+  \param np an optional sequence of named parameters among the ones of `add_gaussian_noise()`
+
+  \pre as for `add_gaussian_noise()`.
+*/
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+void add_isotropic_gaussian_noise(TriangleMesh& tmesh, double relative_sigma,
+                                  const NamedParameters& np = parameters::default_values())
+{
+  internal::Denoising::add_isotropic_noise(tmesh, relative_sigma, np, "add_isotropic_gaussian_noise()");
 }
 
 /*!
