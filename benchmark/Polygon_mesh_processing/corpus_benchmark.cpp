@@ -31,7 +31,19 @@
 //       least-squares update, CGAL's smooth_shape() at its best time step
 //       and the classic methods at their defaults (E_n, E_v, faces turned
 //       against the input); --no-baselines skips the last two (their
-//       errors are written as nan)
+//       errors are written as nan). Also the error of the filtered normals
+//       themselves, the targets of the vertex update (after the first pass
+//       of the fixed setting, and after the last pass of the fixed setting
+//       and of the automatic mode), and a table per noise level of how many
+//       inputs left worse than the noisy one have filtered normals that are
+//       already worse than the noisy face normals
+//   corpus_benchmark --held-out [--results OUT] [--stride N] [--only TEXT]
+//       the automatic mode and the fixed setting on inputs outside the
+//       development corpus: every corpus mesh with noise of other kinds,
+//       levels and seed (held_out_inputs()); E_n, E_v and times, and per
+//       group how many inputs end worse than the noisy one and how the
+//       automatic mode compares with the fixed setting. No oracle: nothing
+//       is fitted to these inputs
 //   corpus_benchmark --noise-free [--results OUT]
 //       the automatic mode on every corpus mesh as it is, with no noise
 //       added: how far it moves a mesh that needs no denoising (E_n and E_v
@@ -106,7 +118,8 @@ struct Noise
   {
     GAUSSIAN,
     IMPULSIVE,
-    DEPTH
+    DEPTH,
+    ISOTROPIC // Gaussian in random directions (held-out inputs only)
   } kind;
   double sigma;
 };
@@ -115,7 +128,8 @@ struct Input
 {
   Corpus_mesh mesh;
   Noise noise;
-  std::string key() const { return mesh.file + "\t" + noise.label + "\t" + std::to_string(seed); }
+  unsigned int noise_seed = seed;
+  std::string key() const { return mesh.file + "\t" + noise.label + "\t" + std::to_string(noise_seed); }
   std::string name() const { return mesh.file + " " + noise.label; }
 };
 
@@ -191,7 +205,7 @@ void make_noisy(const Input& in, Mesh& reference, Mesh& noisy)
     std::exit(1);
   }
   noisy = reference;
-  const auto np = CGAL::parameters::random_seed(seed);
+  const auto np = CGAL::parameters::random_seed(in.noise_seed);
   switch(in.noise.kind)
   {
   case Noise::GAUSSIAN:
@@ -202,6 +216,9 @@ void make_noisy(const Input& in, Mesh& reference, Mesh& noisy)
     break;
   case Noise::DEPTH:
     PMP::add_depth_scan_noise(noisy, in.noise.sigma, np);
+    break;
+  case Noise::ISOTROPIC:
+    PMP::add_isotropic_gaussian_noise(noisy, in.noise.sigma, np);
     break;
   }
 }
@@ -620,6 +637,51 @@ Outcome outcome(const Mesh& noisy, const Mesh& reference, const Method& method)
   return o;
 }
 
+// The mean angle in degrees between `normals` (one per face, as a
+// face_normal_map receives them) and the face normals of `reference`, face by
+// face, as face_normal_error() measures meshes: a zero vector counts as 0.
+double normals_error(const std::vector<K::Vector_3>& normals, const Mesh& reference)
+{
+  double sum = 0.;
+  std::size_t i = 0;
+  for(auto f : faces(reference))
+  {
+    const auto h = halfedge(f, reference);
+    const K::Point_3 &a = reference.point(source(h, reference)), &b = reference.point(target(h, reference)),
+                     &c = reference.point(target(next(h, reference), reference));
+    const K::Vector_3 n = CGAL::cross_product(b - a, c - a), m = normals[i++];
+    const double s = std::sqrt(CGAL::cross_product(n, m).squared_length()), d = n * m;
+    if(s != 0. || d != 0.)
+      sum += std::atan2(s, d) * 180. / CGAL_PI;
+  }
+  return i == 0 ? 0. : sum / double(i);
+}
+
+// Runs `method` on a copy of `noisy` with a face_normal_map and returns the
+// filtered normals it received, by face index.
+template <typename Method>
+std::vector<K::Vector_3> filtered_normals(const Mesh& noisy, const Method& method)
+{
+  Mesh m = noisy;
+  auto map = m.add_property_map<Mesh::Face_index, K::Vector_3>("f:filtered", CGAL::NULL_VECTOR).first;
+  method(m, map);
+  std::vector<K::Vector_3> out;
+  for(auto f : faces(m))
+    out.push_back(get(map, f));
+  return out;
+}
+
+// Per noise level of the irregular study: inputs that a mode leaves worse
+// than the noisy input in E_n, and among them those whose filtered normals
+// (the targets of the vertex update) are already further from the reference
+// than the noisy face normals are.
+struct Normals_tally
+{
+  std::size_t inputs = 0, fixed_worse = 0, fixed_worse_normals = 0, first_pass_worse = 0, auto_worse = 0,
+              auto_worse_normals = 0, auto_at_most_smooth = 0, auto_normals_at_most_smooth = 0;
+  Named_inputs auto_worse_names;
+};
+
 // --irregular: see the usage at the top.
 void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool baselines)
 {
@@ -629,8 +691,10 @@ void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool 
     std::fprintf(results, "# mesh\tnoise\tseed\tnoisy_En\tnoisy_Ev");
     for(const char* c : columns)
       std::fprintf(results, "\t%s_En\t%s_Ev\t%s_turned\t%s_s", c, c, c, c);
-    std::fprintf(results, "\tsmooth_time\n");
+    std::fprintf(results,
+                 "\tsmooth_time\tfixed_first_pass_normals_En\tfixed_paper_normals_En\tauto_paper_normals_En\n");
   }
+  std::map<double, Normals_tally> tally;
   std::printf(
       "| input | noisy | fixed eq.10 | fixed LS | auto eq.10 | auto LS | smooth_shape (best) | best classic | "
       "turned (fixed LS, auto LS) | s (fixed eq.10, fixed LS, auto LS) |\n|---|---|---|---|---|---|---|---|---|---|\n");
@@ -691,6 +755,19 @@ void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool 
             best_classic = r;
         }
       o.push_back(best_classic);
+      // the filtered normals themselves: after the first pass of the fixed
+      // setting (no vertex update yet) and after the last pass of the fixed
+      // setting and of the automatic mode (eq. 10)
+      const auto normals_of = [&](auto np) {
+        return normals_error(
+            filtered_normals(noisy,
+                             [&](Mesh& m, auto map) { PMP::intrinsic_denoising<Tag>(m, np.face_normal_map(map)); }),
+            reference);
+      };
+      const double first_pass_normals =
+          normals_of(CGAL::parameters::automatic_parameters(false).number_of_iterations(1));
+      const double fixed_normals = normals_of(CGAL::parameters::automatic_parameters(false));
+      const double auto_normals = normals_of(CGAL::parameters::automatic_parameters(true));
       if(!baselines) // not run: "nan" in the results file
         for(std::size_t i = 4; i < o.size(); ++i)
           o[i].En = o[i].Ev = std::numeric_limits<double>::quiet_NaN();
@@ -709,10 +786,125 @@ void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool 
         std::fprintf(results, "%s\t%.4f\t%.4g", in.key().c_str(), noisy_En, noisy_Ev);
         for(const Outcome& x : o)
           std::fprintf(results, "\t%.4f\t%.4g\t%zu\t%.3f", x.En, x.Ev, x.turned, x.seconds);
-        std::fprintf(results, "\t%g\n", best_time);
+        std::fprintf(results, "\t%g\t%.4f\t%.4f\t%.4f\n", best_time, first_pass_normals, fixed_normals, auto_normals);
         std::fflush(results);
       }
+      Normals_tally& t = tally[level];
+      ++t.inputs;
+      t.first_pass_worse += first_pass_normals > noisy_En;
+      if(o[0].En > noisy_En)
+      {
+        ++t.fixed_worse;
+        t.fixed_worse_normals += fixed_normals > noisy_En;
+      }
+      if(o[2].En > noisy_En)
+      {
+        ++t.auto_worse;
+        t.auto_worse_normals += auto_normals > noisy_En;
+        t.auto_worse_names.add(in0.mesh.file);
+      }
+      t.auto_at_most_smooth += o[2].En <= o[4].En;
+      t.auto_normals_at_most_smooth += auto_normals <= o[4].En;
     }
+  }
+  std::printf("\nWhere the error comes from: the filtered normals (the targets of the vertex update) against the "
+              "noisy face normals, eq. 10\n\n| sigma_E | inputs | first pass of the fixed setting worse than noisy | "
+              "fixed E_n worse than noisy / of them with filtered normals worse | automatic E_n worse than noisy / "
+              "of them with filtered normals worse | automatic E_n at most smooth_shape's / its filtered normals "
+              "at most smooth_shape's E_n |\n|---|---|---|---|---|---|\n");
+  for(const auto& [level, t] : tally)
+    std::printf("| %.2f | %zu | %zu | %zu / %zu | %zu / %zu%s | %zu / %zu |\n", level, t.inputs, t.first_pass_worse,
+                t.fixed_worse, t.fixed_worse_normals, t.auto_worse, t.auto_worse_normals,
+                t.auto_worse_names.names.c_str(), t.auto_at_most_smooth, t.auto_normals_at_most_smooth);
+}
+
+// The held-out inputs (--held-out): every corpus mesh with noise that the
+// development inputs do not have, seed 2: Gaussian noise in random directions
+// (add_isotropic_gaussian_noise()) at sigma_E 0.15 and 0.4, Gaussian noise
+// along the normals at 0.4 and depth-scan noise at 0.3.
+std::vector<Input> held_out_inputs(const std::vector<Corpus_mesh>& meshes)
+{
+  std::vector<Input> inputs;
+  for(const Corpus_mesh& m : meshes)
+    for(const Noise& n : {Noise{"isotropic0.15", Noise::ISOTROPIC, 0.15}, Noise{"isotropic0.4", Noise::ISOTROPIC, 0.4},
+                          Noise{"gauss0.4", Noise::GAUSSIAN, 0.4}, Noise{"depth0.3", Noise::DEPTH, 0.3}})
+      inputs.push_back({m, n, 2u});
+  return inputs;
+}
+
+// --held-out: see the usage at the top.
+void held_out_study(const std::vector<Input>& inputs, std::FILE* results)
+{
+  if(results)
+    std::fprintf(results, "# mesh\tnoise\tseed\tgroup\tnoisy_En\tauto_En\tfixed_En\tnoisy_Ev\tauto_Ev\tfixed_Ev\t"
+                          "auto_s\tfixed_s\n");
+  std::printf("| input | noisy E_n | auto | fixed | noisy E_v | auto | fixed | auto s | fixed s |\n"
+              "|---|---|---|---|---|---|---|---|---|\n");
+  struct Group
+  {
+    std::vector<double> vs_fixed, time_ratio;
+    std::size_t n = 0, fixed_ok = 0;
+    Named_inputs worse_En, worse_Ev, over_fixed_5;
+  };
+  std::map<std::string, Group> groups; // "regular", "irregular", "all inputs"
+  for(const Input& in : inputs)
+  {
+    Mesh reference, noisy;
+    make_noisy(in, reference, noisy);
+    Mesh a = noisy, f = noisy;
+    denoising_support::Stopwatch watch;
+    PMP::intrinsic_denoising<Tag>(a);
+    const double auto_s = watch.seconds();
+    watch.restart();
+    PMP::intrinsic_denoising<Tag>(f, CGAL::parameters::automatic_parameters(false));
+    const double fixed_s = watch.seconds();
+    const double noisy_En = PMP::face_normal_error(noisy, reference),
+                 noisy_Ev = PMP::vertex_position_error(noisy, reference);
+    const double auto_En = PMP::face_normal_error(a, reference), auto_Ev = PMP::vertex_position_error(a, reference);
+    const double fixed_En = PMP::face_normal_error(f, reference), fixed_Ev = PMP::vertex_position_error(f, reference);
+    const char* group = in.mesh.irregular ? "irregular" : "regular";
+    std::printf("| %s | %.2f | %.2f | %.2f | %.3g | %.3g | %.3g | %.3f | %.3f |\n", in.name().c_str(), noisy_En,
+                auto_En, fixed_En, noisy_Ev, auto_Ev, fixed_Ev, auto_s, fixed_s);
+    std::fflush(stdout);
+    if(results)
+    {
+      std::fprintf(results, "%s\t%s\t%.4f\t%.4f\t%.4f\t%.4g\t%.4g\t%.4g\t%.3f\t%.3f\n", in.key().c_str(), group,
+                   noisy_En, auto_En, fixed_En, noisy_Ev, auto_Ev, fixed_Ev, auto_s, fixed_s);
+      std::fflush(results);
+    }
+    for(const char* name : {group, "all inputs"})
+    {
+      Group& g = groups[name];
+      ++g.n;
+      g.vs_fixed.push_back(auto_En / fixed_En);
+      g.time_ratio.push_back(auto_s / fixed_s);
+      g.fixed_ok += auto_En <= fixed_En;
+      if(auto_En > noisy_En)
+        g.worse_En.add(in.name());
+      if(auto_Ev > noisy_Ev)
+        g.worse_Ev.add(in.name());
+      if(!(auto_En <= 1.05 * fixed_En))
+        g.over_fixed_5.add(in.name());
+    }
+  }
+  for(const char* name : {"regular", "irregular", "all inputs"})
+  {
+    const auto it = groups.find(name);
+    if(it == groups.end())
+      continue;
+    const Group& g = it->second;
+    const double n = double(g.n);
+    std::printf("\n### held-out inputs, %s: %zu\n\n", name, g.n);
+    std::printf("- auto / fixed (E_n): median %.3f, 90th percentile %.3f, worst %.3f\n", quantile(g.vs_fixed, 0.5),
+                quantile(g.vs_fixed, 0.9), quantile(g.vs_fixed, 1.));
+    std::printf("- auto / fixed (seconds): median %.2f, 90th percentile %.2f, worst %.2f\n",
+                quantile(g.time_ratio, 0.5), quantile(g.time_ratio, 0.9), quantile(g.time_ratio, 1.));
+    std::printf("- worse than the noisy input: E_n %zu%s%s; E_v %zu%s%s\n", g.worse_En.count,
+                g.worse_En.count ? ":" : "", g.worse_En.names.c_str(), g.worse_Ev.count, g.worse_Ev.count ? ":" : "",
+                g.worse_Ev.names.c_str());
+    std::printf("- at least as good as the fixed setting: %zu (%.1f%%); within 5%% of it: %zu (%.1f%%)%s%s\n",
+                g.fixed_ok, 100. * g.fixed_ok / n, g.n - g.over_fixed_5.count, 100. * (g.n - g.over_fixed_5.count) / n,
+                g.over_fixed_5.count ? "; more than 5% worse:" : "", g.over_fixed_5.names.c_str());
   }
 }
 
@@ -767,7 +959,7 @@ int main(int argc, char** argv)
 {
   std::string reference_file = std::string(CORPUS_DIR) + "/corpus_reference.tsv", build_file, trace_file, results_file,
               only;
-  bool list = false, candidates = false, irregular_mode = false, baselines = true, noise_free = false;
+  bool list = false, candidates = false, irregular_mode = false, baselines = true, noise_free = false, held_out = false;
   std::size_t stride = 1, offset = 0;
   for(int i = 1; i < argc; ++i)
   {
@@ -788,6 +980,8 @@ int main(int argc, char** argv)
       irregular_mode = true;
     else if(a == "--noise-free")
       noise_free = true;
+    else if(a == "--held-out")
+      held_out = true;
     else if(a == "--no-baselines")
       baselines = false;
     else if(a == "--build-reference")
@@ -809,14 +1003,14 @@ int main(int argc, char** argv)
       std::cerr
           << "usage: corpus_benchmark [--list] [--build-reference FILE [--trace FILE]] [--reference FILE] "
              "[--results FILE] [--stride N] [--offset M] [--only TEXT] [--candidates] [--irregular [--no-baselines]] "
-             "[--noise-free]\n";
+             "[--noise-free] [--held-out]\n";
       return 2;
     }
   }
   const std::vector<Corpus_mesh> meshes = corpus_meshes(); // each file read once
   std::vector<Input> inputs;
   {
-    const std::vector<Input> all = corpus_inputs(meshes);
+    const std::vector<Input> all = held_out ? held_out_inputs(meshes) : corpus_inputs(meshes);
     for(std::size_t i = offset; i < all.size(); i += stride)
       if(only.empty() || all[i].name().find(only) != std::string::npos)
         inputs.push_back(all[i]);
@@ -831,6 +1025,14 @@ int main(int argc, char** argv)
   {
     std::FILE* results = results_file.empty() ? nullptr : std::fopen(results_file.c_str(), "w");
     irregular_study(inputs, results, baselines);
+    if(results)
+      std::fclose(results);
+    return 0;
+  }
+  if(held_out)
+  {
+    std::FILE* results = results_file.empty() ? nullptr : std::fopen(results_file.c_str(), "w");
+    held_out_study(inputs, results);
     if(results)
       std::fclose(results);
     return 0;

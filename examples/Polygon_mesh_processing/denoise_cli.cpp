@@ -68,6 +68,7 @@ struct Settings
   std::string paths = "square", threads = "all", vertex_update = "paper", relax;
   bool step_length = false, self_weight = false, no_fold_guard = false, quiet = false;
   double noise = 0., impulsive = 1.;
+  std::string noise_kind = "normal";
 };
 
 const char* const help_head = R"(NAME
@@ -138,10 +139,12 @@ DESCRIPTION
     table of E_n, E_v and seconds; the table also goes to FILE.csv.
 
     With --noise, seeded Gaussian noise is added to INPUT first (as in the
-    paper's experiments, section 5.2). With --reference, the errors E_n (mean
-    face normal angle, degrees, eq. 12) and E_v (area-weighted distance to the
-    reference, eq. 11) of the input and of the result are printed; the
-    reference must have the same faces as INPUT (same count and order).
+    paper's experiments, section 5.2); --noise-kind chooses it along the
+    vertex normals, in random directions or as a simulated depth scan. With
+    --reference, the errors E_n (mean face normal angle, degrees, eq. 12) and
+    E_v (area-weighted distance to the reference, eq. 11) of the input and of
+    the result are printed; the reference must have the same faces as INPUT
+    (same count and order).
 
     The result is written as OUTPUT (format from its extension; default
     INPUT_denoised.off next to INPUT) through a temporary file and a rename,
@@ -241,8 +244,12 @@ po::options_description make_options(Settings& s)
        "1: sequential; all: parallel with TBB when available (the result is the same)")
     ("noise", po::value(&s.noise)->value_name("SIGMA_E"),
        "first add Gaussian noise along vertex normals, of standard deviation SIGMA_E times the mean edge length")
+    ("noise-kind", po::value(&s.noise_kind)->value_name("KIND")->default_value(s.noise_kind),
+       "with --noise: normal (along the vertex normals), isotropic (in random directions, SIGMA_E the RMS length "
+       "of the moves) or depth-scan (along the rays from a virtual camera, growing with depth, with ripples and "
+       "outliers)")
     ("impulsive", po::value(&s.impulsive)->value_name("FRACTION"),
-       "with --noise: impulsive noise, only this fraction of the vertices moves")
+       "with --noise and --noise-kind normal: impulsive noise, only this fraction of the vertices moves")
     ("seed", po::value(&s.seed)->value_name("SEED")->default_value(s.seed), "seed of the noise (reproducible)")
     ("noisy-output", po::value(&s.noisy_output)->value_name("FILE"), "with --noise: also write the noisy mesh")
     ("reference", po::value(&s.reference)->value_name("FILE"),
@@ -503,6 +510,12 @@ int main(int argc, char** argv)
     return fail(exit_usage, "--impulsive must lie in [0, 1]");
   if((vm.count("impulsive") || vm.count("noisy-output")) && !vm.count("noise"))
     return fail(exit_usage, "--impulsive and --noisy-output need --noise");
+  if(s.noise_kind != "normal" && s.noise_kind != "isotropic" && s.noise_kind != "depth-scan")
+    return fail(exit_usage, "--noise-kind must be normal, isotropic or depth-scan, not '" + s.noise_kind + "'");
+  if(!vm["noise-kind"].defaulted() && !vm.count("noise"))
+    return fail(exit_usage, "--noise-kind needs --noise");
+  if(vm.count("impulsive") && s.noise_kind != "normal")
+    return fail(exit_usage, "--impulsive needs --noise-kind normal");
   {
     const std::string usage = check_method_options(method, vm);
     if(!usage.empty())
@@ -556,11 +569,15 @@ int main(int argc, char** argv)
   {
     try
     {
+      const auto seeded = CGAL::parameters::random_seed(static_cast<unsigned int>(s.seed));
       if(vm.count("impulsive"))
-        PMP::add_impulsive_noise(input, s.impulsive, s.noise,
-                                 CGAL::parameters::random_seed(static_cast<unsigned int>(s.seed)));
+        PMP::add_impulsive_noise(input, s.impulsive, s.noise, seeded);
+      else if(s.noise_kind == "isotropic")
+        PMP::add_isotropic_gaussian_noise(input, s.noise, seeded);
+      else if(s.noise_kind == "depth-scan")
+        PMP::add_depth_scan_noise(input, s.noise, seeded);
       else
-        PMP::add_gaussian_noise(input, s.noise, CGAL::parameters::random_seed(static_cast<unsigned int>(s.seed)));
+        PMP::add_gaussian_noise(input, s.noise, seeded);
     }
     catch(const std::exception& e)
     {
@@ -568,7 +585,11 @@ int main(int argc, char** argv)
     }
     if(talk)
     {
-      std::cout << (vm.count("impulsive") ? "impulsive" : "Gaussian") << " noise: sigma_E = " << s.noise;
+      std::cout << (vm.count("impulsive")          ? "impulsive"
+                    : s.noise_kind == "isotropic"  ? "isotropic Gaussian"
+                    : s.noise_kind == "depth-scan" ? "depth-scan"
+                                                   : "Gaussian")
+                << " noise: sigma_E = " << s.noise;
       if(vm.count("impulsive"))
         std::cout << ", fraction " << s.impulsive;
       std::cout << ", seed " << s.seed << "\n";
