@@ -243,7 +243,8 @@ po::options_description make_options(Settings& s)
     ("threads", po::value(&s.threads)->value_name("1|all")->default_value(s.threads),
        "1: sequential; all: parallel with TBB when available (the result is the same)")
     ("noise", po::value(&s.noise)->value_name("SIGMA_E"),
-       "first add Gaussian noise along vertex normals, of standard deviation SIGMA_E times the mean edge length")
+       "first add seeded Gaussian noise of standard deviation SIGMA_E times the mean edge length, along the vertex "
+       "normals unless --noise-kind says otherwise")
     ("noise-kind", po::value(&s.noise_kind)->value_name("KIND")->default_value(s.noise_kind),
        "with --noise: normal (along the vertex normals), isotropic (in random directions, SIGMA_E the RMS length "
        "of the moves) or depth-scan (along the rays from a virtual camera, growing with depth, with ripples and "
