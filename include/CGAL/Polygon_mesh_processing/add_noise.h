@@ -55,6 +55,32 @@ public:
   }
 };
 
+// Moves each vertex of `tmesh` by a seeded random displacement: calls
+// `make_draw(m)` once with the flattened mesh, then `draw(v, sigma, gaussian,
+// d)` for every vertex in order, fixed or not, so that the noise of a vertex
+// does not depend on which others are fixed; the vertex moves by d if `draw`
+// returns true and it is not constrained. sigma is relative_sigma times the
+// mean edge length. The caller has checked the arguments; `tmesh` has faces.
+template <typename TriangleMesh, typename NamedParameters, typename MakeDraw>
+void add_vertex_noise(TriangleMesh& tmesh, double relative_sigma, const NamedParameters& np, const char* fname,
+                      const MakeDraw& make_draw)
+{
+  const Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
+  const std::uint64_t seed = parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u);
+  Flat_mesh m = maps.flat(tmesh, fname);
+  const std::vector<char> fixed = maps.constrained(tmesh);
+  const double sigma = relative_sigma * mean_edge_length(m);
+  const auto draw = make_draw(m);
+  Seeded_gaussian gaussian(seed);
+  for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
+  {
+    Vec3 d;
+    if(draw(v, sigma, gaussian, d) && !fixed[v])
+      m.points[v] = m.points[v] + d;
+  }
+  maps.write_points(tmesh, m.points);
+}
+
 template <typename TriangleMesh, typename NamedParameters>
 void add_noise_along_normals(TriangleMesh& tmesh, double relative_sigma, double fraction, const NamedParameters& np,
                              const char* fname)
@@ -64,23 +90,14 @@ void add_noise_along_normals(TriangleMesh& tmesh, double relative_sigma, double 
   require_non_negative(relative_sigma, fname, "the noise level");
   if(!(fraction >= 0. && fraction <= 1.))
     throw std::invalid_argument(std::string(fname) + ": the fraction of vertices must lie in [0, 1].");
-  const Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
-  const std::uint64_t seed = parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u);
-  Flat_mesh m = maps.flat(tmesh, fname);
-  const std::vector<Vec3> normals = area_weighted_vertex_normals(m);
-  const std::vector<char> fixed = maps.constrained(tmesh);
-  const double sigma = relative_sigma * mean_edge_length(m);
-  Seeded_gaussian gaussian(seed);
-  for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
-  {
-    // draw for every vertex, so that the noise of a vertex does not depend on
-    // which others are fixed or selected
-    const bool selected = fraction >= 1. || gaussian.uniform() <= fraction;
-    const double amount = sigma * gaussian();
-    if(selected && !fixed[v])
-      m.points[v] = m.points[v] + amount * normals[v];
-  }
-  maps.write_points(tmesh, m.points);
+  add_vertex_noise(tmesh, relative_sigma, np, fname, [fraction](const Flat_mesh& m) {
+    return [fraction, normals = area_weighted_vertex_normals(m)](std::size_t v, double sigma, Seeded_gaussian& gaussian,
+                                                                 Vec3& d) {
+      const bool selected = fraction >= 1. || gaussian.uniform() <= fraction;
+      d = (sigma * gaussian()) * normals[v];
+      return selected;
+    };
+  });
 }
 
 // Isotropic Gaussian noise (see add_isotropic_gaussian_noise()): each vertex
@@ -93,20 +110,13 @@ void add_isotropic_noise(TriangleMesh& tmesh, double relative_sigma, const Named
   if(faces(tmesh).empty())
     return;
   require_non_negative(relative_sigma, fname, "the noise level");
-  const Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
-  const std::uint64_t seed = parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u);
-  Flat_mesh m = maps.flat(tmesh, fname);
-  const std::vector<char> fixed = maps.constrained(tmesh);
-  const double sigma = relative_sigma * mean_edge_length(m) / std::sqrt(3.);
-  Seeded_gaussian gaussian(seed);
-  for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
-  {
-    // drawn for every vertex, fixed or not (as along normals)
-    const double x = gaussian(), y = gaussian(), z = gaussian();
-    if(!fixed[v])
-      m.points[v] = m.points[v] + sigma * Vec3{x, y, z};
-  }
-  maps.write_points(tmesh, m.points);
+  add_vertex_noise(tmesh, relative_sigma, np, fname, [](const Flat_mesh&) {
+    return [](std::size_t, double sigma, Seeded_gaussian& gaussian, Vec3& d) {
+      const double x = gaussian(), y = gaussian(), z = gaussian();
+      d = (sigma / std::sqrt(3.)) * Vec3{x, y, z};
+      return true;
+    };
+  });
 }
 
 // Depth-scan noise (see add_depth_scan_noise()): each vertex moves along the
