@@ -509,6 +509,29 @@ struct Row
   std::string chosen;
 };
 
+// Makes `in` noisy, runs the automatic mode and the fixed setting on it (each
+// timed), and fills the errors and times of `row`; returns the automatic
+// mode's report.
+PMP::Intrinsic_denoising_report measure_auto_and_fixed(const Input& in, Row& row)
+{
+  Mesh reference, noisy;
+  make_noisy(in, reference, noisy);
+  Mesh a = noisy, f = noisy;
+  denoising_support::Stopwatch watch;
+  const PMP::Intrinsic_denoising_report rep = PMP::intrinsic_denoising<Tag>(a);
+  row.auto_s = watch.seconds();
+  watch.restart();
+  PMP::intrinsic_denoising<Tag>(f, CGAL::parameters::automatic_parameters(false));
+  row.fixed_s = watch.seconds();
+  row.auto_En = PMP::face_normal_error(a, reference);
+  row.auto_Ev = PMP::vertex_position_error(a, reference);
+  row.fixed_En = PMP::face_normal_error(f, reference);
+  row.fixed_Ev = PMP::vertex_position_error(f, reference);
+  row.noisy_En = PMP::face_normal_error(noisy, reference);
+  row.noisy_Ev = PMP::vertex_position_error(noisy, reference);
+  return rep;
+}
+
 // Inputs that meet a condition: how many, and their names.
 struct Named_inputs
 {
@@ -637,38 +660,27 @@ Outcome outcome(const Mesh& noisy, const Mesh& reference, const Method& method)
   return o;
 }
 
-// The mean angle in degrees between `normals` (one per face, as a
-// face_normal_map receives them) and the face normals of `reference`, face by
-// face, as face_normal_error() measures meshes: a zero vector counts as 0.
-double normals_error(const std::vector<K::Vector_3>& normals, const Mesh& reference)
+// The filtered normals (one per face, by face index) that `method(m, map)`
+// writes to a face_normal_map `map` of a copy `m` of `noisy`, and their E_n
+// against `reference`: the mean angle to its face normals (mean_angle_degrees(),
+// as face_normal_error() compares two meshes).
+template <typename Method>
+double filtered_normals_error(const Mesh& noisy, const Mesh& reference, const Method& method)
 {
-  double sum = 0.;
-  std::size_t i = 0;
+  Mesh m = noisy;
+  auto map = m.add_property_map<Mesh::Face_index, K::Vector_3>("f:filtered", CGAL::NULL_VECTOR).first;
+  method(m, map);
+  std::vector<D::Vec3> filtered, exact;
   for(auto f : faces(reference))
   {
     const auto h = halfedge(f, reference);
     const K::Point_3 &a = reference.point(source(h, reference)), &b = reference.point(target(h, reference)),
                      &c = reference.point(target(next(h, reference), reference));
-    const K::Vector_3 n = CGAL::cross_product(b - a, c - a), m = normals[i++];
-    const double s = std::sqrt(CGAL::cross_product(n, m).squared_length()), d = n * m;
-    if(s != 0. || d != 0.)
-      sum += std::atan2(s, d) * 180. / CGAL_PI;
+    const K::Vector_3 n = CGAL::cross_product(b - a, c - a), g = get(map, f);
+    exact.push_back({n.x(), n.y(), n.z()});
+    filtered.push_back({g.x(), g.y(), g.z()});
   }
-  return i == 0 ? 0. : sum / double(i);
-}
-
-// Runs `method` on a copy of `noisy` with a face_normal_map and returns the
-// filtered normals it received, by face index.
-template <typename Method>
-std::vector<K::Vector_3> filtered_normals(const Mesh& noisy, const Method& method)
-{
-  Mesh m = noisy;
-  auto map = m.add_property_map<Mesh::Face_index, K::Vector_3>("f:filtered", CGAL::NULL_VECTOR).first;
-  method(m, map);
-  std::vector<K::Vector_3> out;
-  for(auto f : faces(m))
-    out.push_back(get(map, f));
-  return out;
+  return D::mean_angle_degrees(filtered, exact);
 }
 
 // Per noise level of the irregular study: inputs that a mode leaves worse
@@ -759,10 +771,8 @@ void irregular_study(const std::vector<Input>& inputs, std::FILE* results, bool 
       // setting (no vertex update yet) and after the last pass of the fixed
       // setting and of the automatic mode (eq. 10)
       const auto normals_of = [&](auto np) {
-        return normals_error(
-            filtered_normals(noisy,
-                             [&](Mesh& m, auto map) { PMP::intrinsic_denoising<Tag>(m, np.face_normal_map(map)); }),
-            reference);
+        return filtered_normals_error(
+            noisy, reference, [&](Mesh& m, auto map) { PMP::intrinsic_denoising<Tag>(m, np.face_normal_map(map)); });
       };
       const double first_pass_normals =
           normals_of(CGAL::parameters::automatic_parameters(false).number_of_iterations(1));
@@ -849,41 +859,30 @@ void held_out_study(const std::vector<Input>& inputs, std::FILE* results)
   std::map<std::string, Group> groups; // "regular", "irregular", "all inputs"
   for(const Input& in : inputs)
   {
-    Mesh reference, noisy;
-    make_noisy(in, reference, noisy);
-    Mesh a = noisy, f = noisy;
-    denoising_support::Stopwatch watch;
-    PMP::intrinsic_denoising<Tag>(a);
-    const double auto_s = watch.seconds();
-    watch.restart();
-    PMP::intrinsic_denoising<Tag>(f, CGAL::parameters::automatic_parameters(false));
-    const double fixed_s = watch.seconds();
-    const double noisy_En = PMP::face_normal_error(noisy, reference),
-                 noisy_Ev = PMP::vertex_position_error(noisy, reference);
-    const double auto_En = PMP::face_normal_error(a, reference), auto_Ev = PMP::vertex_position_error(a, reference);
-    const double fixed_En = PMP::face_normal_error(f, reference), fixed_Ev = PMP::vertex_position_error(f, reference);
+    Row r;
+    measure_auto_and_fixed(in, r);
     const char* group = in.mesh.irregular ? "irregular" : "regular";
-    std::printf("| %s | %.2f | %.2f | %.2f | %.3g | %.3g | %.3g | %.3f | %.3f |\n", in.name().c_str(), noisy_En,
-                auto_En, fixed_En, noisy_Ev, auto_Ev, fixed_Ev, auto_s, fixed_s);
+    std::printf("| %s | %.2f | %.2f | %.2f | %.3g | %.3g | %.3g | %.3f | %.3f |\n", in.name().c_str(), r.noisy_En,
+                r.auto_En, r.fixed_En, r.noisy_Ev, r.auto_Ev, r.fixed_Ev, r.auto_s, r.fixed_s);
     std::fflush(stdout);
     if(results)
     {
       std::fprintf(results, "%s\t%s\t%.4f\t%.4f\t%.4f\t%.4g\t%.4g\t%.4g\t%.3f\t%.3f\n", in.key().c_str(), group,
-                   noisy_En, auto_En, fixed_En, noisy_Ev, auto_Ev, fixed_Ev, auto_s, fixed_s);
+                   r.noisy_En, r.auto_En, r.fixed_En, r.noisy_Ev, r.auto_Ev, r.fixed_Ev, r.auto_s, r.fixed_s);
       std::fflush(results);
     }
     for(const char* name : {group, "all inputs"})
     {
       Group& g = groups[name];
       ++g.n;
-      g.vs_fixed.push_back(auto_En / fixed_En);
-      g.time_ratio.push_back(auto_s / fixed_s);
-      g.fixed_ok += auto_En <= fixed_En;
-      if(auto_En > noisy_En)
+      g.vs_fixed.push_back(r.auto_En / r.fixed_En);
+      g.time_ratio.push_back(r.auto_s / r.fixed_s);
+      g.fixed_ok += r.auto_En <= r.fixed_En;
+      if(r.auto_En > r.noisy_En)
         g.worse_En.add(in.name());
-      if(auto_Ev > noisy_Ev)
+      if(r.auto_Ev > r.noisy_Ev)
         g.worse_Ev.add(in.name());
-      if(!(auto_En <= 1.05 * fixed_En))
+      if(!(r.auto_En <= 1.05 * r.fixed_En))
         g.over_fixed_5.add(in.name());
     }
   }
@@ -1021,30 +1020,20 @@ int main(int argc, char** argv)
       std::printf("%s\t%zu faces\t%s\n", in.name().c_str(), in.mesh.faces, in.mesh.irregular ? "irregular" : "regular");
     return 0;
   }
+  // a study with its results file (none without --results)
+  const auto study = [&](const auto& run) {
+    std::FILE* results = results_file.empty() ? nullptr : std::fopen(results_file.c_str(), "w");
+    run(results);
+    if(results)
+      std::fclose(results);
+    return 0;
+  };
   if(irregular_mode)
-  {
-    std::FILE* results = results_file.empty() ? nullptr : std::fopen(results_file.c_str(), "w");
-    irregular_study(inputs, results, baselines);
-    if(results)
-      std::fclose(results);
-    return 0;
-  }
+    return study([&](std::FILE* results) { irregular_study(inputs, results, baselines); });
   if(held_out)
-  {
-    std::FILE* results = results_file.empty() ? nullptr : std::fopen(results_file.c_str(), "w");
-    held_out_study(inputs, results);
-    if(results)
-      std::fclose(results);
-    return 0;
-  }
+    return study([&](std::FILE* results) { held_out_study(inputs, results); });
   if(noise_free)
-  {
-    std::FILE* results = results_file.empty() ? nullptr : std::fopen(results_file.c_str(), "w");
-    noise_free_study(inputs, results);
-    if(results)
-      std::fclose(results);
-    return 0;
-  }
+    return study([&](std::FILE* results) { noise_free_study(inputs, results); });
   if(candidates)
   {
     for(const Input& in : inputs)
@@ -1128,21 +1117,7 @@ int main(int argc, char** argv)
     Row row;
     row.in = in;
     row.ref = it->second;
-    Mesh reference, noisy;
-    make_noisy(in, reference, noisy);
-    Mesh a = noisy, f = noisy;
-    denoising_support::Stopwatch watch;
-    const PMP::Intrinsic_denoising_report rep = PMP::intrinsic_denoising<Tag>(a);
-    row.auto_s = watch.seconds();
-    watch.restart();
-    PMP::intrinsic_denoising<Tag>(f, CGAL::parameters::automatic_parameters(false));
-    row.fixed_s = watch.seconds();
-    row.auto_En = PMP::face_normal_error(a, reference);
-    row.auto_Ev = PMP::vertex_position_error(a, reference);
-    row.fixed_En = PMP::face_normal_error(f, reference);
-    row.fixed_Ev = PMP::vertex_position_error(f, reference);
-    row.noisy_En = PMP::face_normal_error(noisy, reference);
-    row.noisy_Ev = PMP::vertex_position_error(noisy, reference);
+    const PMP::Intrinsic_denoising_report rep = measure_auto_and_fixed(in, row);
     char changed[48] = "";
     if(rep.stop_reason == PMP::Intrinsic_stop_reason::SELF_CHECK)
       std::snprintf(changed, sizeof changed, " (self-check, from %u)", rep.candidates[rep.chosen_candidate].iterations);
