@@ -116,7 +116,10 @@ DESCRIPTION
     automatic choices; --fixed uses the paper's fixed parameters instead (k =
     30, v = 2, r = 4d, sigma = 0.4, no stopping rule). After the run, the
     candidates and the one kept (or the noise level), the parameters used and
-    why the iterations stopped are printed.
+    why the iterations stopped are printed. When every candidate stopped
+    within 3 iterations, a note says that the automatic mode cannot tell a
+    mesh with little noise from noise correlated between neighbouring
+    vertices (depth scans), and which parameters to give for a scan.
 
     Neighbourhoods and paths are computed once, on the input. Paths follow the
     paper's square pattern (section 4) by default; --paths chooses the exact

@@ -1,10 +1,11 @@
 # cmake -DEXE=program -DARGS="a|b" -DEXPECTED=code [-DEXPECT_OUTPUT=regex] [-DEXPECT_FILE=path]
 #       [-DEXPECT_NO_FILE=path] [-DEXPECT_STDERR=regex] [-DERROR_PREFIX=regex] [-DEXPECT_OUTPUT_SAME_AS=path]
-#       -P expect_exit_code.cmake
+#       [-DUNEXPECTED_OUTPUT=regex] -P expect_exit_code.cmake
 # Runs EXE with ARGS and fails unless it exits with EXPECTED, its standard
 # error holds exactly one error line (ERROR_PREFIX, default "denoise: ...error: ")
 # when it fails, its standard output matches EXPECT_OUTPUT (and is the
-# content of the file EXPECT_OUTPUT_SAME_AS), its standard error
+# content of the file EXPECT_OUTPUT_SAME_AS) and does not match
+# UNEXPECTED_OUTPUT, its standard error
 # EXPECT_STDERR, EXPECT_FILE exists and EXPECT_NO_FILE does not (when given).
 if(DEFINED EXPECT_FILE)
   file(REMOVE ${EXPECT_FILE})
@@ -30,6 +31,9 @@ if(NOT EXPECTED EQUAL 0)
 endif()
 if(DEFINED EXPECT_OUTPUT AND NOT out MATCHES "${EXPECT_OUTPUT}")
   message(FATAL_ERROR "stdout does not match '${EXPECT_OUTPUT}'")
+endif()
+if(DEFINED UNEXPECTED_OUTPUT AND out MATCHES "${UNEXPECTED_OUTPUT}")
+  message(FATAL_ERROR "stdout matches '${UNEXPECTED_OUTPUT}'")
 endif()
 if(DEFINED EXPECT_OUTPUT_SAME_AS)
   file(READ "${EXPECT_OUTPUT_SAME_AS}" expected_out)
