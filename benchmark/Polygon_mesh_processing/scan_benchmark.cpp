@@ -26,7 +26,8 @@
 //       normals of that setting from 0 to 30 and from 30 to 60 iterations.
 //       On the real scans of DIR (without ground truth: E_n against the
 //       input), on every stride-th simulated scan and on each noise-free
-//       mesh FILE (E_n against itself).
+//       mesh FILE (E_n against itself); with --out OUTDIR, the simulated
+//       scans' noisy and ground-truth meshes as OFF files there.
 //   --window W, --quantisation Q, --levels S1,S2,...  the simulation's
 //       block-matching window (pixels), disparity step (pixels) and sigma_d.
 
@@ -655,7 +656,8 @@ void probe_one(const std::string& name, const Mesh& noisy, const Mesh& truth)
   std::fflush(stdout);
 }
 
-int probe_mode(const std::string& real_dir, const std::vector<std::string>& clean, std::size_t stride)
+int probe_mode(const std::string& real_dir, const std::vector<std::string>& clean, std::size_t stride,
+               const std::string& outdir)
 {
   std::printf("%-34s %7s %6s %5s %3s %7s %7s %7s %7s %7s %7s %7s %6s\n", "input", "faces", "view", "sel", "k", "noisy",
               "auto", "fixed", "scan60", "a0-30", "a30-60", "ratio", "2nd");
@@ -675,8 +677,19 @@ int probe_mode(const std::string& real_dir, const std::vector<std::string>& clea
     ds::Depth_scan_result s;
     if(!scan(inputs[i], s))
       return 1;
-    if(num_faces(s.noisy) >= 100)
-      probe_one(inputs[i].name(), s.noisy, s.ground_truth);
+    if(num_faces(s.noisy) < 100)
+      continue;
+    probe_one(inputs[i].name(), s.noisy, s.ground_truth);
+    if(!outdir.empty())
+    {
+      std::filesystem::create_directories(outdir);
+      std::string stem = inputs[i].name();
+      std::replace(stem.begin(), stem.end(), '/', '_');
+      std::replace(stem.begin(), stem.end(), ':', '_');
+      CGAL::IO::write_polygon_mesh(outdir + "/" + stem + "_noisy.off", s.noisy, CGAL::parameters::stream_precision(17));
+      CGAL::IO::write_polygon_mesh(outdir + "/" + stem + "_truth.off", s.ground_truth,
+                                   CGAL::parameters::stream_precision(17));
+    }
   }
   for(const std::string& path : clean)
   {
@@ -745,7 +758,7 @@ int main(int argc, char** argv)
   if(mode == "--simulated")
     return simulated_mode(results, stride);
   if(mode == "--probe")
-    return probe_mode(real_dir, clean, stride);
+    return probe_mode(real_dir, clean, stride, outdir);
   if(mode == "--real")
     return real_mode(real_dir, outdir);
   std::fprintf(stderr,
