@@ -20,6 +20,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -29,6 +30,7 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -913,4 +915,121 @@ BAD_INPUT_CASE(OutputIsAtomicAndNeverOverwritesTheInput)
   REQUIRE(files == 2);
   REQUIRE(contains(denoise_file::read_mesh_file((dir / "nope.off").string(), back), "cannot open"));
   return "";
+}
+
+// The readers' manifold test (is_oriented_manifold_soup()) answers as CGAL's
+// is_polygon_soup_a_polygon_mesh() on soups of every kind it must tell
+// apart: closed and open surfaces, faces removed from them (pinched
+// vertices: two fans at one vertex), faces flipped or repeated, bowties,
+// two closed fans sharing a vertex, random triangles on a few vertices.
+TEST(MeshFile, ManifoldSoupTestAgreesWithCgal)
+{
+  typedef std::vector<std::vector<std::size_t>> Polygons;
+  auto agree = [](const Polygons& p, std::size_t nv, const std::string& what) {
+    const bool cgal = PMP::is_polygon_soup_a_polygon_mesh(p), ours = denoise_file::is_oriented_manifold_soup(p, nv);
+    EXPECT_EQ(ours, cgal) << what;
+    return cgal;
+  };
+  // a closed surface, an open one (an n x n grid) and two closed fans at one vertex
+  Polygons closed;
+  Mesh fandisk;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
+  for(auto f : faces(fandisk))
+  {
+    closed.emplace_back();
+    for(auto v : vertices_around_face(halfedge(f, fandisk), fandisk))
+      closed.back().push_back(std::size_t(v));
+  }
+  const std::size_t n = 12;
+  Polygons grid;
+  for(std::size_t i = 0; i + 1 < n; ++i)
+    for(std::size_t j = 0; j + 1 < n; ++j)
+    {
+      const std::size_t a = i * n + j, b = a + 1, c = a + n, d = c + 1;
+      grid.push_back({a, b, d});
+      grid.push_back({a, d, c});
+    }
+  const Polygons two_tetrahedra = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2},
+                                   {0, 4, 5}, {0, 5, 6}, {0, 6, 4}, {4, 6, 5}};
+  const Polygons bowtie = {{0, 1, 2}, {0, 3, 4}};
+  const Polygons quads = {{0, 1, 2, 3}, {3, 2, 4, 5}};
+  EXPECT_TRUE(agree(closed, num_vertices(fandisk), "fandisk"));
+  EXPECT_TRUE(agree(grid, n * n, "grid"));
+  EXPECT_TRUE(agree(quads, 6, "two quads"));
+  EXPECT_FALSE(agree(two_tetrahedra, 7, "two tetrahedra at a vertex"));
+  EXPECT_FALSE(agree(bowtie, 5, "bowtie"));
+  std::mt19937 random(7);
+  std::size_t yes = 0, no = 0;
+  for(int trial = 0; trial < 400; ++trial)
+  {
+    const bool on_grid = trial % 2 == 0;
+    Polygons p = on_grid ? grid : closed;
+    const std::size_t nv = on_grid ? n * n : num_vertices(fandisk);
+    const int kind = (trial / 2) % 4;
+    if(kind == 0) // faces removed
+      for(int k = 0; k < 1 + trial % 40; ++k)
+        p.erase(p.begin() + std::ptrdiff_t(random() % p.size()));
+    else if(kind == 1) // a face flipped
+    {
+      std::vector<std::size_t>& f = p[random() % p.size()];
+      std::reverse(f.begin(), f.end());
+    }
+    else if(kind == 2) // a face repeated
+      p.push_back(p[random() % p.size()]);
+    else // a face glued to a far vertex
+      p.push_back({p[random() % p.size()][0], nv, nv + 1});
+    const bool ok = agree(p, nv + 2, "trial " + std::to_string(trial));
+    yes += ok;
+    no += !ok;
+  }
+  for(int trial = 0; trial < 300; ++trial) // random triangles on 6 vertices
+  {
+    Polygons p;
+    for(int k = 0; k < 1 + trial % 8; ++k)
+    {
+      std::size_t a = random() % 6, b = random() % 6, c = random() % 6;
+      if(a != b && b != c && a != c)
+        p.push_back({a, b, c});
+    }
+    const bool ok = agree(p, 6, "random " + std::to_string(trial));
+    yes += ok;
+    no += !ok;
+  }
+  // both answers occur often enough for the agreement to mean something
+  EXPECT_GT(yes, 50u);
+  EXPECT_GT(no, 50u);
+}
+
+// The OFF reader's number scanner (off_text::numbers()) reads every line as
+// the string stream of CGAL's OFF scanner does: the same numbers, bit for
+// bit, up to the same first word that is not one, on lines of random words
+// among plain numbers and the words the two could read differently.
+TEST(MeshFile, OffNumberScannerAgreesWithTheStream)
+{
+  const char* words[] = {"1",        "-2.5", "+3",   "1e5",    "1e999",
+                         "1e-400",   "nan",  "inf",  "-inf",   ".5",
+                         "-.5",      "5.",   "0x10", "abc",    "1,2",
+                         "\t",       "\r",   "--1",  "-",      ".",
+                         "7e-3",     "-0",   "3e",   "1.5e+2", "12345678901234567890",
+                         "4.9e-324", "0.1"};
+  std::mt19937 random(3);
+  std::vector<double> fast;
+  std::size_t lines_with_numbers = 0;
+  for(int trial = 0; trial < 5000; ++trial)
+  {
+    std::string line;
+    for(int k = 0; k < 1 + trial % 7; ++k)
+      line += std::string(k ? " " : "") + words[random() % (sizeof(words) / sizeof(words[0]))];
+    denoise_file::off_text::numbers(line, fast);
+    std::vector<double> stream;
+    std::istringstream in(line);
+    double d;
+    while(in >> CGAL::IO::iformat(d))
+      stream.push_back(d);
+    ASSERT_EQ(fast.size(), stream.size()) << "'" << line << "'";
+    for(std::size_t i = 0; i < fast.size(); ++i)
+      ASSERT_TRUE(same(fast[i], stream[i])) << "'" << line << "' word " << i;
+    lines_with_numbers += !fast.empty();
+  }
+  EXPECT_GT(lines_with_numbers, 1000u);
 }

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -30,6 +31,7 @@
 #include <istream>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <unistd.h>
@@ -68,6 +70,91 @@ inline std::string validate(const Mesh& mesh)
   return std::string();
 }
 
+// Whether `polygons` (vertex indices under `vertex_count`, at least 3 per
+// polygon, none twice in a polygon) is a consistently oriented manifold
+// surface, the test of CGAL's is_polygon_soup_a_polygon_mesh() on such
+// polygons, in time and memory linear in the soup: no directed edge appears
+// twice (an edge has at most two polygons, oriented oppositely), and the
+// polygons around each vertex form one fan, open or closed. The directed
+// edges are grouped by their first vertex (a counting sort); around vertex
+// u, the outgoing edge (u, v) of a polygon is followed by the outgoing edge
+// (u, w) of the polygon across (w, u), w the vertex before u in the first
+// polygon. These links form chains and cycles (no edge is followed twice, as
+// (w, u) is in one polygon only); a chain starts at an edge (u, v) with no
+// opposite (v, u), and one fan is one chain or one cycle through all of
+// u's outgoing edges.
+inline bool is_oriented_manifold_soup(const std::vector<std::vector<std::size_t>>& polygons, std::size_t vertex_count)
+{
+  if(vertex_count >= (std::size_t(1) << 31))
+    return CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons);
+  struct Outgoing // the directed edge (u, to) of a polygon, grouped under u
+  {
+    std::uint32_t to, before; // before: the vertex before u in the polygon
+  };
+  std::vector<std::size_t> offset(vertex_count + 1, 0);
+  for(const auto& polygon : polygons)
+    for(std::size_t u : polygon)
+      ++offset[u + 1];
+  for(std::size_t v = 0; v < vertex_count; ++v)
+    offset[v + 1] += offset[v];
+  std::vector<Outgoing> edges(offset[vertex_count]);
+  {
+    std::vector<std::size_t> fill(offset.begin(), offset.end() - 1);
+    for(const auto& polygon : polygons)
+    {
+      const std::size_t n = polygon.size();
+      for(std::size_t j = 0; j < n; ++j)
+        edges[fill[polygon[j]]++] = {std::uint32_t(polygon[(j + 1) % n]), std::uint32_t(polygon[(j + n - 1) % n])};
+    }
+  }
+  // each vertex's outgoing edges sorted by their end (a handful each), no end twice
+  for(std::size_t u = 0; u < vertex_count; ++u)
+  {
+    const auto b = edges.begin() + std::ptrdiff_t(offset[u]), e = edges.begin() + std::ptrdiff_t(offset[u + 1]);
+    std::sort(b, e, [](const Outgoing& x, const Outgoing& y) { return x.to < y.to; });
+    for(auto it = b; it != e && it + 1 != e; ++it)
+      if(it->to == (it + 1)->to)
+        return false;
+  }
+  // the index of the directed edge (u, to), or none
+  constexpr std::size_t none = std::size_t(-1);
+  auto find = [&](std::size_t u, std::uint32_t to) -> std::size_t {
+    const auto b = edges.begin() + std::ptrdiff_t(offset[u]), e = edges.begin() + std::ptrdiff_t(offset[u + 1]);
+    const auto it = std::lower_bound(b, e, to, [](const Outgoing& x, std::uint32_t t) { return x.to < t; });
+    return it != e && it->to == to ? std::size_t(it - edges.begin()) : none;
+  };
+  std::vector<std::size_t> link;
+  for(std::size_t u = 0; u < vertex_count; ++u)
+  {
+    const std::size_t begin = offset[u], end = offset[u + 1];
+    if(begin == end)
+      continue;
+    link.assign(end - begin, none);
+    std::size_t starts = 0, start = begin;
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      link[i - begin] = find(u, edges[i].before);
+      if(find(edges[i].to, std::uint32_t(u)) == none)
+      {
+        ++starts;
+        start = i;
+      }
+    }
+    if(starts > 1)
+      return false;
+    std::size_t visited = 0;
+    for(std::size_t i = start; i != none && visited <= end - begin; i = link[i - begin])
+    {
+      ++visited;
+      if(starts == 0 && link[i - begin] == start)
+        break;
+    }
+    if(visited != end - begin)
+      return false;
+  }
+  return true;
+}
+
 // The mesh of a polygon soup read from a file: a face may not use a vertex
 // twice; a soup that is not a manifold surface is repaired by
 // orient_polygon_soup() (vertices are duplicated on non-manifold edges and
@@ -83,12 +170,182 @@ inline std::string soup_to_mesh(Soup& soup, Mesh& mesh)
           return "face " + std::to_string(i) + " uses a vertex twice";
   }
   namespace PMP = CGAL::Polygon_mesh_processing;
-  if(!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
+  for(std::size_t i = 0; i < soup.polygons.size(); ++i)
+    if(soup.polygons[i].size() < 3)
+      return "face " + std::to_string(i) + " has fewer than 3 vertices";
+  if(!is_oriented_manifold_soup(soup.polygons, soup.points.size()))
+  {
     PMP::orient_polygon_soup(soup.points, soup.polygons);
-  if(!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
-    return "the faces do not form a surface, even after orient_polygon_soup()";
+    if(!is_oriented_manifold_soup(soup.polygons, soup.points.size()))
+      return "the faces do not form a surface, even after orient_polygon_soup()";
+  }
   PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
   return std::string();
+}
+
+namespace off_text {
+
+// The text after the OFF header, read line by line as CGAL's OFF scanner
+// reads it (skip white space and '#' comment lines, take the rest of the
+// line, drop what follows a '#', read its numbers up to the first that is
+// not one), from a buffer: the stream's per-line strings and string streams
+// cost about 8 s for a million faces.
+class Lines
+{
+public:
+  explicit Lines(std::string text) : text_(std::move(text)) {}
+
+  // The next line as CGAL's skip_comment_OFF() then std::getline() give it;
+  // false at the end of the text.
+  bool next(std::string_view& line)
+  {
+    const std::size_t n = text_.size();
+    for(;;)
+    {
+      while(pos_ < n && std::isspace(static_cast<unsigned char>(text_[pos_])))
+        ++pos_;
+      if(pos_ < n && text_[pos_] == '#')
+      {
+        const std::size_t eol = text_.find('\n', pos_);
+        pos_ = eol == std::string::npos ? n : eol + 1;
+        continue;
+      }
+      break;
+    }
+    if(pos_ >= n)
+      return false;
+    const std::size_t eol = std::min(text_.find('\n', pos_), n);
+    line = std::string_view(text_).substr(pos_, eol - pos_);
+    pos_ = eol < n ? eol + 1 : n;
+    const std::size_t hash = line.find('#');
+    if(hash != std::string_view::npos)
+      line = line.substr(0, hash);
+    return true;
+  }
+
+  // The lines left that hold something but a comment.
+  std::size_t remaining_lines()
+  {
+    std::size_t count = 0;
+    std::string_view line;
+    while(next(line))
+      count += line.find_first_not_of(" \t\r\v\f") != std::string_view::npos;
+    return count;
+  }
+
+private:
+  std::string text_;
+  std::size_t pos_ = 0;
+};
+
+// The numbers of `line` up to the first word that is not one, into
+// `entries`, as `std::istringstream >> CGAL::IO::iformat(double)` reads
+// them. Plain decimal words go through std::from_chars; a line with any
+// other word (a sign '+', "inf", an exponent out of range, ...) is read by
+// the string stream itself, so that both agree on every line.
+inline void numbers(std::string_view line, std::vector<double>& entries)
+{
+  entries.clear();
+  const char* p = line.data();
+  const char* const end = p + line.size();
+  auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  for(;;)
+  {
+    while(p < end && space(*p))
+      ++p;
+    if(p == end)
+      return;
+    const char c = *p;
+    auto digit = [](char x) { return x >= '0' && x <= '9'; };
+    // from_chars would also read "-inf" and "-nan", which the stream does not
+    const bool plain = digit(c) || c == '.' || (c == '-' && p + 1 < end && (digit(p[1]) || p[1] == '.'));
+    double d = 0.;
+    const auto r = plain ? std::from_chars(p, end, d) : std::from_chars_result{p, std::errc::invalid_argument};
+    if(plain && r.ec == std::errc() && (r.ptr == end || space(*r.ptr)))
+    {
+      entries.push_back(d);
+      p = r.ptr;
+      continue;
+    }
+    // anything else: the stream decides, for the whole line
+    entries.clear();
+    std::istringstream words{std::string(line)};
+    while(words >> CGAL::IO::iformat(d))
+      entries.push_back(d);
+    return;
+  }
+}
+
+} // namespace off_text
+
+// The vertices and faces of a plain text OFF file ("OFF", three coordinates
+// a vertex) after its header, with the checks of read_off(), then
+// soup_to_mesh().
+inline std::string read_plain_off_body(std::istream& in, std::size_t nv, std::size_t nf,
+                                       std::vector<K::Point_3>& points, std::vector<std::vector<std::size_t>>& polygons,
+                                       Mesh& mesh, std::vector<std::string>* warnings)
+{
+  // the rest of the data in one read where the stream can say its size
+  std::string text;
+  const std::streampos here = in.tellg();
+  in.seekg(0, std::ios::end);
+  const std::streampos last = in.tellg();
+  if(here != std::streampos(-1) && last != std::streampos(-1) && last >= here)
+  {
+    in.seekg(here);
+    text.resize(std::size_t(last - here));
+    in.read(text.data(), std::streamsize(text.size()));
+    text.resize(std::size_t(in.gcount()));
+  }
+  else
+  {
+    in.clear();
+    std::ostringstream rest;
+    rest << in.rdbuf();
+    text = std::move(rest).str();
+  }
+  off_text::Lines lines{std::move(text)};
+  std::string_view line;
+  std::vector<double> entries;
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    if(!lines.next(line))
+      return "truncated or malformed vertex " + std::to_string(i);
+    off_text::numbers(line, entries);
+    if(entries.size() < 3)
+      return "truncated or malformed vertex " + std::to_string(i);
+    const double x = entries[0], y = entries[1], z = entries[2];
+    if(!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+      return "vertex " + std::to_string(i) + " has a NaN or infinite coordinate";
+    points.emplace_back(x, y, z);
+  }
+  auto is_index = [](double x, std::size_t bound) { return x >= 0. && x < double(bound) && x == std::floor(x); };
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    if(!lines.next(line))
+      return "truncated face " + std::to_string(i);
+    off_text::numbers(line, entries);
+    if(entries.empty() || !is_index(entries[0], nv + 1) || entries[0] < 3. ||
+       entries.size() < 1 + std::size_t(entries[0]))
+      return "malformed face " + std::to_string(i);
+    std::vector<std::size_t> polygon(static_cast<std::size_t>(entries[0]));
+    for(std::size_t j = 0; j < polygon.size(); ++j)
+    {
+      if(!is_index(entries[j + 1], nv))
+        return "face " + std::to_string(i) + " has a vertex index out of range";
+      polygon[j] = std::size_t(entries[j + 1]);
+    }
+    polygons.push_back(std::move(polygon));
+  }
+  if(warnings)
+  {
+    const std::size_t extra = lines.remaining_lines();
+    if(extra > 0)
+      warnings->push_back(std::to_string(extra) + " line" + (extra > 1 ? "s" : "") + " after the " +
+                          std::to_string(nf) + " faces the OFF header announces, ignored");
+  }
+  Soup soup{std::move(points), std::move(polygons)};
+  return soup_to_mesh(soup, mesh);
 }
 
 // Reads OFF data of `byte_count` bytes as CGAL's OFF reader does (same
@@ -112,6 +369,9 @@ inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh
   std::vector<std::vector<std::size_t>> polygons;
   points.reserve(nv);
   polygons.reserve(nf);
+  if(!scanner.binary() && !scanner.has_normals() && !scanner.has_colors() && !scanner.has_textures() &&
+     !scanner.is_homogeneous() && scanner.dimension() == 3)
+    return read_plain_off_body(in, nv, nf, points, polygons, mesh, warnings);
   for(std::size_t i = 0; i < nv; ++i)
   {
     double x = 0, y = 0, z = 0, w = 1;
