@@ -657,9 +657,68 @@ inline std::string output_path(const std::string& input)
   return (p.parent_path() / (p.stem().string() + "_denoised.off")).string();
 }
 
-// Writes `mesh` (OFF, 17 digits) to `path` through a temporary file in the
-// same directory and a rename: `path` is either left as it was or holds the
-// whole mesh. Refuses to write over `protect` (the input file).
+// `mesh` as OFF text: each coordinate in the shortest decimal form that
+// reads back as the same double (std::to_chars), vertices numbered in the
+// order of vertices(mesh). Written through one buffer: an ostream's
+// per-number formatting costs about a second per million faces.
+inline bool write_off_text(std::ostream& out, const Mesh& mesh)
+{
+  std::size_t max_index = 0;
+  for(auto v : vertices(mesh))
+    max_index = std::max(max_index, std::size_t(v));
+  // number_of_*(): the elements not removed (num_vertices() counts those too)
+  std::vector<std::size_t> id(mesh.number_of_vertices() == 0 ? 0 : max_index + 1, 0);
+  std::size_t next_id = 0;
+  for(auto v : vertices(mesh))
+    id[std::size_t(v)] = next_id++;
+  std::string buffer;
+  buffer.reserve(std::size_t(1) << 20);
+  char number[64];
+  auto append = [&](auto x) {
+    const auto r = std::to_chars(number, number + sizeof(number), x);
+    buffer.append(number, r.ptr);
+  };
+  auto flush = [&](bool force) {
+    if(force || buffer.size() >= (std::size_t(1) << 20) - 256)
+    {
+      out.write(buffer.data(), std::streamsize(buffer.size()));
+      buffer.clear();
+    }
+  };
+  buffer += "OFF\n";
+  append(std::size_t(mesh.number_of_vertices()));
+  buffer += ' ';
+  append(std::size_t(mesh.number_of_faces()));
+  buffer += " 0\n";
+  for(auto v : vertices(mesh))
+  {
+    const K::Point_3& p = mesh.point(v);
+    append(p.x());
+    buffer += ' ';
+    append(p.y());
+    buffer += ' ';
+    append(p.z());
+    buffer += '\n';
+    flush(false);
+  }
+  for(auto f : faces(mesh))
+  {
+    append(std::size_t(degree(f, mesh)));
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+    {
+      buffer += ' ';
+      append(id[std::size_t(v)]);
+    }
+    buffer += '\n';
+    flush(false);
+  }
+  flush(true);
+  return bool(out);
+}
+
+// Writes `mesh` (OFF, write_off_text()) to `path` through a temporary file in
+// the same directory and a rename: `path` is either left as it was or holds
+// the whole mesh. Refuses to write over `protect` (the input file).
 inline std::string write_mesh_file(const std::string& path, const Mesh& mesh, const std::string& protect = "")
 {
   namespace fs = std::filesystem;
@@ -670,7 +729,7 @@ inline std::string write_mesh_file(const std::string& path, const Mesh& mesh, co
   bool ok = false;
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    ok = out && CGAL::IO::write_OFF(out, mesh, CGAL::parameters::stream_precision(17));
+    ok = out && write_off_text(out, mesh);
     out.close();
     ok = ok && !out.fail();
   }
@@ -682,8 +741,9 @@ inline std::string write_mesh_file(const std::string& path, const Mesh& mesh, co
   return std::string();
 }
 
-// Writes `mesh` to `path` in the format of its extension (OFF, OBJ, PLY or
-// STL, 17 digits), atomically as write_mesh_file() does (temporary file in
+// Writes `mesh` to `path` in the format of its extension (OFF as
+// write_off_text() writes it; OBJ, PLY or STL by CGAL with 17 digits),
+// atomically as write_mesh_file() does (temporary file in
 // the same directory, then a rename), never over `protect`.
 inline std::string write_mesh(const std::string& path, const Mesh& mesh, const std::string& protect = "")
 {
