@@ -276,14 +276,40 @@ inline void numbers(std::string_view line, std::vector<double>& entries)
   }
 }
 
+// The polygon of face `i` from the numbers of its line (its size, then its
+// vertex indices, each under `nv`; what follows is ignored), into
+// `polygon`. Returns "" or a one-line message.
+inline std::string face(const std::vector<double>& entries, std::size_t nv, std::size_t i,
+                        std::vector<std::size_t>& polygon)
+{
+  auto is_index = [](double x, std::size_t bound) { return x >= 0. && x < double(bound) && x == std::floor(x); };
+  if(entries.empty() || !is_index(entries[0], nv + 1) || entries[0] < 3. ||
+     entries.size() < 1 + static_cast<std::size_t>(entries[0]))
+    return "malformed face " + std::to_string(i);
+  polygon.resize(static_cast<std::size_t>(entries[0]));
+  for(std::size_t j = 0; j < polygon.size(); ++j)
+  {
+    if(!is_index(entries[j + 1], nv))
+      return "face " + std::to_string(i) + " has a vertex index out of range";
+    polygon[j] = static_cast<std::size_t>(entries[j + 1]);
+  }
+  return std::string();
+}
+
+// The warning for `extra` lines after the `nf` faces of the header.
+inline std::string extra_lines_warning(std::size_t extra, std::size_t nf)
+{
+  return std::to_string(extra) + " line" + (extra > 1 ? "s" : "") + " after the " + std::to_string(nf) +
+         " faces the OFF header announces, ignored";
+}
+
 } // namespace off_text
 
 // The vertices and faces of a plain text OFF file ("OFF", three coordinates
 // a vertex) after its header, with the checks of read_off(), then
 // soup_to_mesh().
-inline std::string read_plain_off_body(std::istream& in, std::size_t nv, std::size_t nf,
-                                       std::vector<K::Point_3>& points, std::vector<std::vector<std::size_t>>& polygons,
-                                       Mesh& mesh, std::vector<std::string>* warnings)
+inline std::string read_plain_off_body(std::istream& in, std::size_t nv, std::size_t nf, Mesh& mesh,
+                                       std::vector<std::string>* warnings)
 {
   // the rest of the data in one read where the stream can say its size
   std::string text;
@@ -307,6 +333,10 @@ inline std::string read_plain_off_body(std::istream& in, std::size_t nv, std::si
   off_text::Lines lines{std::move(text)};
   std::string_view line;
   std::vector<double> entries;
+  std::vector<K::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  points.reserve(nv);
+  polygons.reserve(nf);
   for(std::size_t i = 0; i < nv; ++i)
   {
     if(!lines.next(line))
@@ -319,31 +349,19 @@ inline std::string read_plain_off_body(std::istream& in, std::size_t nv, std::si
       return "vertex " + std::to_string(i) + " has a NaN or infinite coordinate";
     points.emplace_back(x, y, z);
   }
-  auto is_index = [](double x, std::size_t bound) { return x >= 0. && x < double(bound) && x == std::floor(x); };
   for(std::size_t i = 0; i < nf; ++i)
   {
     if(!lines.next(line))
       return "truncated face " + std::to_string(i);
     off_text::numbers(line, entries);
-    if(entries.empty() || !is_index(entries[0], nv + 1) || entries[0] < 3. ||
-       entries.size() < 1 + std::size_t(entries[0]))
-      return "malformed face " + std::to_string(i);
-    std::vector<std::size_t> polygon(static_cast<std::size_t>(entries[0]));
-    for(std::size_t j = 0; j < polygon.size(); ++j)
-    {
-      if(!is_index(entries[j + 1], nv))
-        return "face " + std::to_string(i) + " has a vertex index out of range";
-      polygon[j] = std::size_t(entries[j + 1]);
-    }
+    std::vector<std::size_t> polygon;
+    if(std::string problem = off_text::face(entries, nv, i, polygon); !problem.empty())
+      return problem;
     polygons.push_back(std::move(polygon));
   }
   if(warnings)
-  {
-    const std::size_t extra = lines.remaining_lines();
-    if(extra > 0)
-      warnings->push_back(std::to_string(extra) + " line" + (extra > 1 ? "s" : "") + " after the " +
-                          std::to_string(nf) + " faces the OFF header announces, ignored");
-  }
+    if(const std::size_t extra = lines.remaining_lines(); extra > 0)
+      warnings->push_back(off_text::extra_lines_warning(extra, nf));
   Soup soup{std::move(points), std::move(polygons)};
   return soup_to_mesh(soup, mesh);
 }
@@ -365,13 +383,13 @@ inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh
   if(nv > byte_count || nf > byte_count)
     return "the OFF header announces " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
            " faces, more than " + std::to_string(byte_count) + " bytes can hold";
+  if(!scanner.binary() && !scanner.has_normals() && !scanner.has_colors() && !scanner.has_textures() &&
+     !scanner.is_homogeneous() && scanner.dimension() == 3)
+    return read_plain_off_body(in, nv, nf, mesh, warnings);
   std::vector<K::Point_3> points;
   std::vector<std::vector<std::size_t>> polygons;
   points.reserve(nv);
   polygons.reserve(nf);
-  if(!scanner.binary() && !scanner.has_normals() && !scanner.has_colors() && !scanner.has_textures() &&
-     !scanner.is_homogeneous() && scanner.dimension() == 3)
-    return read_plain_off_body(in, nv, nf, points, polygons, mesh, warnings);
   for(std::size_t i = 0; i < nv; ++i)
   {
     double x = 0, y = 0, z = 0, w = 1;
@@ -431,23 +449,10 @@ inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh
       std::string line;
       if(!std::getline(in, line))
         return "truncated face " + std::to_string(i);
-      line = line.substr(0, line.find('#'));
-      std::istringstream words(line);
       std::vector<double> entries;
-      double d;
-      while(words >> CGAL::IO::iformat(d))
-        entries.push_back(d);
-      auto is_index = [](double x, std::size_t bound) { return x >= 0. && x < double(bound) && x == std::floor(x); };
-      if(entries.empty() || !is_index(entries[0], nv + 1) || entries[0] < 3. ||
-         entries.size() < 1 + std::size_t(entries[0]))
-        return "malformed face " + std::to_string(i);
-      polygon.resize(std::size_t(entries[0]));
-      for(std::size_t j = 0; j < polygon.size(); ++j)
-      {
-        if(!is_index(entries[j + 1], nv))
-          return "face " + std::to_string(i) + " has a vertex index out of range";
-        polygon[j] = std::size_t(entries[j + 1]);
-      }
+      off_text::numbers(std::string_view(line).substr(0, line.find('#')), entries);
+      if(std::string problem = off_text::face(entries, nv, i, polygon); !problem.empty())
+        return problem;
     }
     polygons.push_back(std::move(polygon));
   }
@@ -465,8 +470,7 @@ inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh
         ++extra;
     }
     if(extra > 0)
-      warnings->push_back(std::to_string(extra) + " line" + (extra > 1 ? "s" : "") + " after the " +
-                          std::to_string(nf) + " faces the OFF header announces, ignored");
+      warnings->push_back(off_text::extra_lines_warning(extra, nf));
   }
   Soup soup{std::move(points), std::move(polygons)};
   return soup_to_mesh(soup, mesh);
