@@ -489,14 +489,7 @@ std::vector<std::string> meshes_unlike_reference(const std::map<std::string, Ref
   return differ;
 }
 
-double quantile(std::vector<double> v, double q)
-{
-  if(v.empty())
-    return 0.;
-  std::sort(v.begin(), v.end());
-  const std::size_t k = std::min(v.size() - 1, std::size_t(std::ceil(q * double(v.size()))) - (q > 0. ? 1 : 0));
-  return v[k];
-}
+using denoising_support::quantile;
 
 struct Row
 {

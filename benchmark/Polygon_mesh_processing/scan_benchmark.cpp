@@ -41,6 +41,7 @@
 
 #include <denoising_support/benchmark_common.h>
 #include <denoising_support/depth_scan_simulation.h>
+#include <denoising_support/mesh_file.h>
 
 #include <algorithm>
 #include <cmath>
@@ -453,16 +454,6 @@ int stats_mode(const std::string& real_dir, const std::string& tsv)
   return 0;
 }
 
-double quantile(std::vector<double> v, double q)
-{
-  if(v.empty())
-    return 0.;
-  std::sort(v.begin(), v.end());
-  const double x = q * double(v.size() - 1);
-  const std::size_t i = std::size_t(x);
-  return i + 1 < v.size() ? v[i] + (x - double(i)) * (v[i + 1] - v[i]) : v.back();
-}
-
 int simulated_mode(const std::string& results, std::size_t stride)
 {
   const std::vector<Scan_input> inputs = simulated_inputs();
@@ -526,10 +517,10 @@ int simulated_mode(const std::string& results, std::size_t stride)
     return s;
   };
   std::printf("\n%zu inputs, %.0f s\n", n, total.seconds());
-  std::printf("auto/fixed:  median %.3f, 90th percentile %.3f, worst %s\n", quantile(auto_fixed, 0.5),
-              quantile(auto_fixed, 0.9), worst(auto_fixed).c_str());
-  std::printf("auto/oracle: median %.3f, 90th percentile %.3f, worst %s\n", quantile(auto_oracle, 0.5),
-              quantile(auto_oracle, 0.9), worst(auto_oracle).c_str());
+  std::printf("auto/fixed:  median %.3f, 90th percentile %.3f, worst %s\n", ds::quantile(auto_fixed, 0.5),
+              ds::quantile(auto_fixed, 0.9), worst(auto_fixed).c_str());
+  std::printf("auto/oracle: median %.3f, 90th percentile %.3f, worst %s\n", ds::quantile(auto_oracle, 0.5),
+              ds::quantile(auto_oracle, 0.9), worst(auto_oracle).c_str());
   std::printf("auto <= fixed: %zu of %zu; auto within 10%% of the oracle: %zu of %zu\n", auto_le_fixed, n,
               auto_near_oracle, n);
   std::printf("auto worse than noisy: %zu", auto_worse_than_noisy.size());
@@ -632,16 +623,6 @@ Mesh run_setting(const Mesh& noisy, double sigma, double radius, unsigned int k)
   return m;
 }
 
-bool short_selection(const PMP::Intrinsic_denoising_report& r)
-{
-  if(r.candidates.empty())
-    return false;
-  for(const auto& c : r.candidates)
-    if(!c.stopped_by_correlation || c.iterations > 3)
-      return false;
-  return true;
-}
-
 void probe_one(const std::string& name, const Mesh& noisy, const Mesh& truth)
 {
   const Run a = run_auto(noisy);
@@ -649,8 +630,9 @@ void probe_one(const std::string& name, const Mesh& noisy, const Mesh& truth)
              s60 = run_setting(noisy, 0.8, 6., 60);
   const double a1 = PMP::face_normal_error(s30, noisy), a2 = PMP::face_normal_error(s60, s30);
   std::printf("%-34s %7zu %6.3f %5s %3u %7.2f %7.2f %7.2f %7.2f %7.2f %7.2f %7.3f %6.3f\n", name.c_str(),
-              std::size_t(num_faces(noisy)), single_view_share(noisy), short_selection(a.report) ? "short" : "-",
-              a.report.iterations, PMP::face_normal_error(noisy, truth), PMP::face_normal_error(a.mesh, truth),
+              std::size_t(num_faces(noisy)), single_view_share(noisy),
+              denoise_file::short_selection(a.report) ? "short" : "-", a.report.iterations,
+              PMP::face_normal_error(noisy, truth), PMP::face_normal_error(a.mesh, truth),
               PMP::face_normal_error(f, truth), PMP::face_normal_error(s60, truth), a1, a2, a2 / a1,
               a.report.second_pass_angle / std::max(1e-12, a.report.change_angle));
   std::fflush(stdout);

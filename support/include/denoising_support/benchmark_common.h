@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The intrinsic denoising package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// What the benchmarks share: reading a triangle mesh of CGAL's data set and
-// timing with a wall-clock stopwatch.
+// What the benchmarks share: reading a triangle mesh of CGAL's data set,
+// timing with a wall-clock stopwatch and the quantiles of their summaries.
 
 #ifndef DENOISING_SUPPORT_BENCHMARK_COMMON_H
 #define DENOISING_SUPPORT_BENCHMARK_COMMON_H
@@ -10,8 +10,11 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
+#include <vector>
 
 namespace denoising_support {
 
@@ -34,6 +37,17 @@ public:
 private:
   std::chrono::steady_clock::time_point start_;
 };
+
+// The q-quantile of `v` by nearest rank (the smallest value with at least a
+// fraction q of the values at or below it; q = 0: the smallest); 0 if empty.
+inline double quantile(std::vector<double> v, double q)
+{
+  if(v.empty())
+    return 0.;
+  std::sort(v.begin(), v.end());
+  const std::size_t k = std::min(v.size() - 1, std::size_t(std::ceil(q * double(v.size()))) - (q > 0. ? 1 : 0));
+  return v[k];
+}
 
 } // namespace denoising_support
 
