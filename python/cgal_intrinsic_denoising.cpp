@@ -258,6 +258,8 @@ struct Intrinsic_options
   std::optional<long long> number_of_iterations;
   std::optional<bool> stop_when_converged, relax_along_surface;
   long long vertex_iterations = 2, geodesic_patch_rings = 0;
+  long long selection_sample_faces =
+      static_cast<long long>(PMP::Intrinsic_denoising_report::default_selection_sample_faces);
   std::string vertex_update = "paper", path_strategy = "square_pattern";
   double spatial_exponent = 1., range_exponent = 1.;
   bool use_step_length = false, include_self_weight = false, prevent_folds = true;
@@ -379,6 +381,8 @@ py::dict report_dict(const PMP::Intrinsic_denoising_report& r)
   }
   d["candidates"] = candidates;
   d["chosen_candidate"] = r.chosen_candidate;
+  d["selection_sample_faces"] = r.selection_sample_faces;
+  d["selection_sample_patches"] = r.selection_sample_patches;
   d["inlier_residual_correlation"] = r.inlier_residual_correlation;
   d["outlier_vertices"] = r.outlier_vertices;
   d["change_angle"] = r.change_angle;
@@ -398,6 +402,7 @@ py::tuple denoise(const py::handle& V, const py::handle& F, const py::object& co
     to_unsigned(*o.number_of_iterations, "number_of_iterations");
   const unsigned int vertex_iterations = to_unsigned(o.vertex_iterations, "vertex_iterations");
   const unsigned int rings = to_unsigned(o.geodesic_patch_rings, "geodesic_patch_rings");
+  const std::size_t sample_faces = to_unsigned(o.selection_sample_faces, "selection_sample_faces");
   const PMP::Vertex_update update = read_vertex_update(o.vertex_update);
   const PMP::Intrinsic_path_strategy strategy = read_paths(o.path_strategy);
   if(o.neighbor_radius && o.relative_neighbor_radius)
@@ -438,6 +443,7 @@ py::tuple denoise(const py::handle& V, const py::handle& F, const py::object& co
                       .stop_when_converged(stop)
                       .relax_along_surface(relax)
                       .progress_callback(callback)
+                      .selection_sample_faces(sample_faces)
                       .vertex_is_constrained_map(constrained_vertices)
                       .face_normal_map(normals);
   Intrinsic_call call{input->mesh, o, PMP::Intrinsic_denoising_report()};
@@ -568,7 +574,8 @@ PYBIND11_MODULE(cgal_intrinsic_denoising, m)
          std::optional<double> neighbor_radius, std::optional<double> relative_neighbor_radius,
          const std::string& path_strategy, bool use_step_length, long long geodesic_patch_rings,
          bool include_self_weight, bool prevent_folds, std::optional<bool> relax_along_surface,
-         const py::object& constrained, const py::object& progress, long long threads) {
+         long long selection_sample_faces, const py::object& constrained, const py::object& progress,
+         long long threads) {
         Intrinsic_options o;
         o.automatic_parameters = automatic_parameters;
         o.noise_level = noise_level;
@@ -588,6 +595,7 @@ PYBIND11_MODULE(cgal_intrinsic_denoising, m)
         o.include_self_weight = include_self_weight;
         o.prevent_folds = prevent_folds;
         o.relax_along_surface = relax_along_surface;
+        o.selection_sample_faces = selection_sample_faces;
         return denoise(V, F, constrained, progress, threads, o);
       },
       py::arg("V"), py::arg("F"), py::kw_only(), py::arg("automatic_parameters") = true,
@@ -597,8 +605,9 @@ PYBIND11_MODULE(cgal_intrinsic_denoising, m)
       py::arg("range_exponent") = 1., py::arg("neighbor_radius") = py::none(),
       py::arg("relative_neighbor_radius") = py::none(), py::arg("path_strategy") = "square_pattern",
       py::arg("use_step_length") = false, py::arg("geodesic_patch_rings") = 0, py::arg("include_self_weight") = false,
-      py::arg("prevent_folds") = true, py::arg("relax_along_surface") = py::none(), py::arg("constrained") = py::none(),
-      py::arg("progress") = py::none(), py::arg("threads") = 0,
+      py::arg("prevent_folds") = true, py::arg("relax_along_surface") = py::none(),
+      py::arg("selection_sample_faces") = Intrinsic_options().selection_sample_faces,
+      py::arg("constrained") = py::none(), py::arg("progress") = py::none(), py::arg("threads") = 0,
       R"(Denoises the triangle mesh (V, F) with intrinsic_denoising() (Algorithm 1 of "Mesh denoising via
 generalized intrinsic filter on 2D manifold") and returns (V_out, report).
 
@@ -612,8 +621,10 @@ Keywords are the named parameters of intrinsic_denoising(), with its defaults; N
 'square_pattern', 'geodesic', 'direct' or 'shortest_graph_path'. stop_when_converged: default on in the
 automatic mode unless number_of_iterations is given. relax_along_surface: default on when the automatic
 selection runs (none of the sigmas, radii, number_of_iterations or noise_level given, stopping rule on);
-report['relaxed_vertices'] counts the vertices it moved. constrained: boolean array, one entry per vertex,
-True for vertices that never move. progress: callable progress(done, total) after each iteration.
+report['relaxed_vertices'] counts the vertices it moved. selection_sample_faces: on a mesh of more than
+three times this many faces the automatic selection chooses its setting on a sample of about this many
+faces (report['selection_sample_faces']), which then runs once on the whole mesh; 0: never.
+constrained: boolean array, one entry per vertex, True for vertices that never move. progress: callable progress(done, total) after each iteration.
 threads: 0 for all, or a limit (the result does not depend on it). Ctrl-C interrupts after the
 current iteration. Bad input raises ValueError or TypeError naming the problem.)");
 

@@ -117,6 +117,7 @@ def test_noise_is_bitwise_the_tools(tmp_path, fandisk):
     (["--fixed", "--vertex-update", "least-squares", "-k", "5"],
      {"automatic_parameters": False, "vertex_update": "least_squares", "number_of_iterations": 5}),
     (["-k", "60"], {"number_of_iterations": 60}),  # the stopping rule stays off (on, it stops at 36)
+    (["--selection-sample", "3000"], {"selection_sample_faces": 3000}),  # the selection on a sample
     (["--sigma-spatial", "0.6", "--relative-radius", "3", "--noise-level", "0.25"],
      {"sigma_spatial": 0.6, "relative_neighbor_radius": 3.0, "noise_level": 0.25}),
 ])
@@ -205,6 +206,16 @@ def test_arguments_are_not_modified_and_other_dtypes_are_read(noisy):
     W_view, _ = dn.denoise(np.asfortranarray(N32.astype(np.float64)), F[:, [0, 1, 2]],
                            automatic_parameters=False, number_of_iterations=3)
     assert np.array_equal(W_view, W)
+
+
+def test_selection_on_a_sample_is_reported(noisy):
+    N, F = noisy  # 12,946 faces: sampled with up to 4,315, not with more
+    _, sampled = dn.denoise(N, F, selection_sample_faces=3000)
+    assert sampled["selection_sample_faces"] == 3000
+    assert sampled["selection_sample_patches"] >= 5
+    W, whole = dn.denoise(N, F, selection_sample_faces=4316)
+    assert whole["selection_sample_faces"] == 0 and whole["selection_sample_patches"] == 0
+    assert np.array_equal(W, dn.denoise(N, F)[0])
 
 
 def test_thread_count_does_not_change_the_result(noisy):
@@ -383,6 +394,7 @@ BAD_CALLS = [
     (lambda V, F: dn.denoise(V, F, constrained=np.zeros(3, dtype=bool)), ValueError, "one entry per row"),
     (lambda V, F: dn.denoise(V, F, progress=3), TypeError, "progress must be callable"),
     (lambda V, F: dn.denoise(V, F, threads=-2), ValueError, "threads"),
+    (lambda V, F: dn.denoise(V, F, selection_sample_faces=-1), ValueError, "selection_sample_faces"),
     (lambda V, F: dn.denoise(V, F, sigma=0.3), TypeError, "incompatible function arguments"),
     (lambda V, F: dn.guided_normal_denoising(V, F, sigma_range=0.0), ValueError, "sigma_range"),
     (lambda V, F: dn.l0_denoising(V, F, l0_weight=-1.0), ValueError, "l0"),

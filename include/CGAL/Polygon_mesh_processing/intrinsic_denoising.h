@@ -299,6 +299,16 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
       \cgalParamType{bool}
       \cgalParamDefault{`true` in the automatic mode unless `number_of_iterations` is given, `false` otherwise}
     \cgalParamNEnd
+    \cgalParamNBegin{selection_sample_faces}
+      \cgalParamDescription{on a mesh of more than three times this many faces, the automatic selection (candidates,
+                            sparse-noise test, self-check, second pass) runs on a sample of about this many faces, in
+                            five patches grown from seed faces drawn with a fixed seed, and the setting it
+                            chooses (kernel, radius, number of iterations) then runs once on the whole mesh; with
+                            sparse noise the selection runs again on the whole mesh. `0`: always on the whole mesh.
+                            The report gives the sample's size (`selection_sample_faces`)}
+      \cgalParamType{std::size_t}
+      \cgalParamDefault{`100000`}
+    \cgalParamNEnd
     \cgalParamNBegin{progress_callback}
       \cgalParamDescription{called after each iteration with the number of iterations done and the largest number
                             (the stopping rule may end the run earlier); during the automatic selection, after each

@@ -9,6 +9,7 @@
 
 #include <CGAL/Polygon_mesh_processing/denoising_types.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/selection_sample.h>
 
 #include <cstddef>
 #include <vector>
@@ -155,6 +156,12 @@ struct Intrinsic_denoising_report
   /// 2% below the candidate's (the lowest such); `self_check_errors` are then
   /// its angles and `relative_neighbor_radius` says which it is
   std::vector<double> self_check_smallest_errors;
+  /// the number of faces of the sample on which the automatic selection
+  /// chose its setting, and of the patches they form (see the named
+  /// parameter `selection_sample_faces`); both 0 if it ran on the whole mesh.
+  /// The candidates, the self-check and the second pass above are then those
+  /// of the sample, and the setting chosen ran once on the whole mesh.
+  std::size_t selection_sample_faces = 0, selection_sample_patches = 0;
   /// the candidates of the automatic selection (empty if it did not run:
   /// see `intrinsic_denoising()` for when it does), in the order they ran
   std::vector<Intrinsic_candidate_report> candidates;
@@ -163,6 +170,8 @@ struct Intrinsic_denoising_report
   /// the constants of the stopping rule
   static constexpr double displacement_fraction = internal::Denoising::Automatic_rules::displacement_fraction;
   static constexpr double change_tolerance = internal::Denoising::Automatic_rules::change_tolerance;
+  /// the default of the named parameter `selection_sample_faces`
+  static constexpr std::size_t default_selection_sample_faces = internal::Denoising::Sample_rules::faces;
 };
 
 } // namespace Polygon_mesh_processing

@@ -585,6 +585,9 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
     out << "selection: " << r.candidates.size() << " candidates, each stopped before its residual correlation across "
         << "edges reached the threshold; among the flattest results (if piecewise flat), the lowest correlation at a "
         << "common residual RMS wins\n";
+    if(r.selection_sample_faces > 0)
+      out << "sample: the selection ran on " << r.selection_sample_faces << " faces in " << r.selection_sample_patches
+          << " patches of the mesh, its setting then once on the whole mesh\n";
     for(std::size_t c = 0; c < r.candidates.size(); ++c)
     {
       const auto& k = r.candidates[c];

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The driver of intrinsic_denoising() (Algorithm 1): reads the options once,
-// then either runs the automatic selection (automatic_selection.h) or one
+// then either runs the automatic selection (automatic_selection.h; on a
+// sample of a big mesh, selection_sample.h) or one
 // denoising with the parameters given and automatic defaults for the others,
 // ended by the stopping rule if it is on; the result goes back to the mesh
 // in one write.
@@ -16,6 +17,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/named_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/selection_sample.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/tangential_relaxation.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising_report.h>
@@ -79,58 +81,33 @@ public:
   // in the report. The kept run is then denoised again with only its
   // outliers moving if the noise is sparse, or else checked on a synthetic
   // copy of its result and shortened or lengthened if the check says so.
+  // On a big mesh (Sample_rules) all of this runs on a sample of patches,
+  // and the setting chosen once on the whole mesh.
   Candidate_run select_automatically()
   {
-    Automatic_selection<ConcurrencyTag> selection(vertex_iterations_, prevent_folds_, keep_normals, vertex_update_);
-    const std::vector<char> constrained = maps_.constrained(tmesh_);
-    selection.run_candidates(
-        Selection_rules::candidates, Selection_rules::number_of_candidates,
-        [this](const Selection_rules::Candidate& candidate) { return candidate_setup(candidate); }, constrained,
-        progress_callback());
-    const std::size_t best = selection.choose();
-    std::vector<Candidate_run>& runs = selection.runs();
-    report_selection(selection, best);
-    if(runs[best].iterations == 0)
-      return std::move(runs[best]);
-
-    const Selection_rules::Candidate& kept = Selection_rules::candidates[best];
-    if(!selection.reuse_paths(kept.relative_radius, constrained)) // the paths of the kept candidate's radius
-      selection.setup_paths(candidate_setup(kept), constrained);
-    // Sparse noise (sparse_noise.h): if the kept result's residual says that
-    // only a few vertices were noisy, those alone are denoised, from the
-    // input, with the kept kernel, radius and number of iterations.
-    const Sparse_noise_test test = selection.test_sparse_noise(runs[best]);
-    report_.inlier_residual_correlation = test.inlier_correlation;
-    if(test.sparse)
+    const std::size_t sample_faces = parameters::choose_parameter(
+        parameters::get_parameter(np_, internal_np::selection_sample_faces), Sample_rules::faces);
+    // sampled if nf > min_ratio * sample_faces, written so as not to overflow (nf >= 1)
+    const std::size_t nf = std::size_t(num_faces(tmesh_));
+    if(sample_faces == 0 || sample_faces > (nf - 1) / Sample_rules::min_ratio)
+      return select_on(maps_, true);
+    Selection_sample sample;
     {
-      Candidate_run outliers_only = selection.run_outliers_only(kept.sigma, report_.iterations, test.outlier);
-      report_.outlier_vertices = test.outliers;
-      report_.displacement = outliers_only.trajectory.back().rms;
-      if(relax_)
-        report_.relaxed_vertices = selection.relax(outliers_only, test.outlier);
-      return outliers_only;
+      const Flat_mesh whole = maps_.flat(tmesh_, fname);
+      sample = sample_patches(whole, maps_.constrained(tmesh_), sample_faces,
+                              std::max<std::size_t>(1, sample_faces / Sample_rules::patches));
     }
-    Candidate_run result = self_check(selection, std::move(runs[best]), kept, constrained);
-    // The second pass (Selection_rules::second_pass_share): if the kept
-    // kernel changes its own short run's result by more than half as much
-    // as that run changed the input, what the run removed was mostly shape,
-    // and the input is kept.
-    if(result.iterations > 0 && result.iterations <= Selection_rules::second_pass_max_iterations)
+    select_on(Sample_maps{&sample}, false);
+    if(report_.outlier_vertices == 0)
     {
-      const std::pair<double, double> angles = selection.second_pass_angles(result, kept.sigma);
-      report_.change_angle = angles.first;
-      report_.second_pass_angle = angles.second;
-      if(angles.second > Selection_rules::second_pass_share * angles.first)
-      {
-        report_.iterations = 0;
-        report_.stop_reason = Intrinsic_stop_reason::SECOND_PASS;
-        report_.displacement = 0.;
-        return selection.run_from_input(kept.sigma, 0);
-      }
+      report_.selection_sample_faces = sample.mesh.number_of_faces();
+      report_.selection_sample_patches = sample.patches;
+      return run_chosen_setting();
     }
-    if(relax_)
-      report_.relaxed_vertices = selection.relax(result);
-    return result;
+    const bool automatic = report_.automatic_parameters; // sparse noise: the outliers are found on the whole mesh
+    report_ = Intrinsic_denoising_report();
+    report_.automatic_parameters = automatic;
+    return select_on(maps_, true);
   }
 
   // One denoising from the input with the parameters given and, for the
@@ -209,13 +186,106 @@ private:
     return parameters::choose_parameter(parameters::get_parameter(np_, internal_np::progress_callback), No_progress());
   }
 
-  // The paths of a candidate of the automatic selection.
-  Intrinsic_setup candidate_setup(const Selection_rules::Candidate& candidate) const
+  // The selection on the mesh that `maps` gives (the input or a sample of
+  // it); `finish`: the result is the one returned (relaxed along the surface
+  // if asked), not only the choice of a setting.
+  template <typename Maps>
+  Candidate_run select_on(const Maps& maps, bool finish)
+  {
+    Automatic_selection<ConcurrencyTag> selection(vertex_iterations_, prevent_folds_, keep_normals, vertex_update_);
+    const std::vector<char> constrained = maps.constrained(tmesh_);
+    selection.run_candidates(
+        Selection_rules::candidates, Selection_rules::number_of_candidates,
+        [this, &maps](const Selection_rules::Candidate& candidate) { return candidate_setup(maps, candidate); },
+        constrained, progress_callback());
+    const std::size_t best = selection.choose();
+    std::vector<Candidate_run>& runs = selection.runs();
+    report_selection(selection, best);
+    if(runs[best].iterations == 0)
+      return std::move(runs[best]);
+
+    const Selection_rules::Candidate& kept = Selection_rules::candidates[best];
+    if(!selection.reuse_paths(kept.relative_radius, constrained)) // the paths of the kept candidate's radius
+      selection.setup_paths(candidate_setup(maps, kept), constrained);
+    // Sparse noise (sparse_noise.h): if the kept result's residual says that
+    // only a few vertices were noisy, those alone are denoised, from the
+    // input, with the kept kernel, radius and number of iterations.
+    const Sparse_noise_test test = selection.test_sparse_noise(runs[best]);
+    report_.inlier_residual_correlation = test.inlier_correlation;
+    if(test.sparse)
+    {
+      Candidate_run outliers_only = selection.run_outliers_only(kept.sigma, report_.iterations, test.outlier);
+      report_.outlier_vertices = test.outliers;
+      report_.displacement = outliers_only.trajectory.back().rms;
+      if(relax_ && finish)
+        report_.relaxed_vertices = selection.relax(outliers_only, test.outlier);
+      return outliers_only;
+    }
+    Candidate_run result = self_check(maps, selection, std::move(runs[best]), kept, constrained);
+    // The second pass (Selection_rules::second_pass_share): if the kept
+    // kernel changes its own short run's result by more than half as much
+    // as that run changed the input, what the run removed was mostly shape,
+    // and the input is kept.
+    if(result.iterations > 0 && result.iterations <= Selection_rules::second_pass_max_iterations)
+    {
+      const std::pair<double, double> angles = selection.second_pass_angles(result, kept.sigma);
+      report_.change_angle = angles.first;
+      report_.second_pass_angle = angles.second;
+      if(angles.second > Selection_rules::second_pass_share * angles.first)
+      {
+        report_.iterations = 0;
+        report_.stop_reason = Intrinsic_stop_reason::SECOND_PASS;
+        report_.displacement = 0.;
+        return selection.run_from_input(kept.sigma, 0);
+      }
+    }
+    if(relax_ && finish)
+      report_.relaxed_vertices = selection.relax(result);
+    return result;
+  }
+
+  // The setting the report holds (kernel, radius, iterations: chosen on a
+  // sample) run from the input on the whole mesh, and relaxed along the
+  // surface if asked; with no iteration, the input.
+  Candidate_run run_chosen_setting()
+  {
+    const double sigma = report_.sigma_range, radius = report_.relative_neighbor_radius;
+    const unsigned int k = report_.iterations;
+    if(k == 0)
+    {
+      Candidate_run input;
+      const Flat_mesh m = maps_.flat(tmesh_, fname);
+      report_.mean_edge_length = mean_edge_length<ConcurrencyTag>(m);
+      input.points = m.points;
+      if constexpr(keep_normals)
+      {
+        Face_data faces;
+        compute_face_data<ConcurrencyTag>(m, m.points, faces);
+        input.normals = std::move(faces.normals);
+      }
+      return input;
+    }
+    Automatic_selection<ConcurrencyTag> selection(vertex_iterations_, prevent_folds_, keep_normals, vertex_update_);
+    const std::vector<char> constrained = maps_.constrained(tmesh_);
+    selection.setup_paths(candidate_setup(maps_, {sigma, radius}), constrained);
+    Candidate_run result = selection.run_from_input(sigma, k);
+    report_.mean_edge_length = selection.mean_edge_length_of_input();
+    report_.neighbor_radius = radius * selection.centroid_distance();
+    report_.displacement = result.trajectory[k - 1].rms;
+    if(relax_)
+      report_.relaxed_vertices = selection.relax(result);
+    return result;
+  }
+
+  // The paths of a candidate of the automatic selection on the mesh that
+  // `maps` gives.
+  template <typename Maps>
+  Intrinsic_setup candidate_setup(const Maps& maps, const Selection_rules::Candidate& candidate) const
   {
     Setup_defaults defaults;
     defaults.sigma_spatial = defaults.sigma_range = candidate.sigma;
     defaults.relative_radius = candidate.relative_radius;
-    return make_intrinsic_setup<ConcurrencyTag>(tmesh_, np_, maps_, fname,
+    return make_intrinsic_setup<ConcurrencyTag>(tmesh_, np_, maps, fname,
                                                 [&defaults](const Flat_mesh&) { return defaults; });
   }
 
@@ -233,7 +303,8 @@ private:
   // then, or if another number of iterations recovered the copy better, the
   // run is redone from the input (or, with the candidate's radius and more
   // iterations, goes on from its result).
-  Candidate_run self_check(Automatic_selection<ConcurrencyTag>& selection, Candidate_run&& run,
+  template <typename Maps>
+  Candidate_run self_check(const Maps& maps, Automatic_selection<ConcurrencyTag>& selection, Candidate_run&& run,
                            const Selection_rules::Candidate& kept, const std::vector<char>& constrained)
   {
     const std::vector<Vec3> copy = selection.synthetic_copy(run);
@@ -275,7 +346,7 @@ private:
         errors = std::move(e);
       }
     if(!selection.reuse_paths(radius, constrained))
-      selection.setup_paths(candidate_setup({kept.sigma, radius}), constrained);
+      selection.setup_paths(candidate_setup(maps, {kept.sigma, radius}), constrained);
     const unsigned int k = self_check_iterations(errors, run.iterations);
     report_.self_check_errors = std::move(errors);
     const bool same_radius = radius == run.relative_radius;

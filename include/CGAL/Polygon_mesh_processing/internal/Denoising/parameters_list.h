@@ -59,6 +59,8 @@ CGAL_add_named_parameter(noise_level_t, noise_level, noise_level)
 // whether the iterations stop by the no-ground-truth rule (default: unless
 // number_of_iterations is given or automatic_parameters is false)
 CGAL_add_named_parameter(stop_when_converged_t, stop_when_converged, stop_when_converged)
+// the automatic selection's sample size on big meshes (0: the whole mesh)
+CGAL_add_named_parameter(selection_sample_faces_t, selection_sample_faces, selection_sample_faces)
 // a callable (iterations done, maximum iterations) called after each iteration
 CGAL_add_named_parameter(progress_callback_t, progress_callback, progress_callback)
 
