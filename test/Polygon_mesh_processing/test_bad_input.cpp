@@ -1000,6 +1000,84 @@ TEST(MeshFile, ManifoldSoupTestAgreesWithCgal)
   EXPECT_GT(no, 50u);
 }
 
+// The readers' mesh builder (build_oriented_manifold_mesh()) gives the mesh
+// CGAL's polygon_soup_to_polygon_mesh() gives, index for index and link for
+// link (every halfedge's target, next, prev and face, every vertex's and
+// face's halfedge), on every manifold soup of the kinds above: closed and
+// open surfaces, with faces removed (holes, pinched borders), flipped
+// faces repaired by orient_polygon_soup(), quads, isolated vertices.
+TEST(MeshFile, DirectBuildIsCgalsBuild)
+{
+  typedef std::vector<std::vector<std::size_t>> Polygons;
+  std::size_t compared = 0;
+  auto same = [&compared](const Polygons& polygons, std::size_t nv, const std::string& what) {
+    if(!denoise_file::is_oriented_manifold_soup(polygons, nv))
+      return;
+    std::vector<K::Point_3> points;
+    for(std::size_t v = 0; v < nv; ++v)
+      points.emplace_back(double(v), double(v * v % 7), 0.5 * double(v % 3));
+    Mesh ours, cgal;
+    denoise_file::build_oriented_manifold_mesh(points, polygons, ours);
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, cgal);
+    ASSERT_EQ(ours.num_vertices(), cgal.num_vertices()) << what;
+    ASSERT_EQ(ours.num_halfedges(), cgal.num_halfedges()) << what;
+    ASSERT_EQ(ours.num_faces(), cgal.num_faces()) << what;
+    EXPECT_TRUE(ours.is_valid(false)) << what;
+    std::size_t different = 0;
+    for(auto h : halfedges(cgal))
+      different += ours.target(h) != cgal.target(h) || ours.next(h) != cgal.next(h) || ours.prev(h) != cgal.prev(h) ||
+                   ours.face(h) != cgal.face(h);
+    for(auto v : vertices(cgal))
+      different += ours.halfedge(v) != cgal.halfedge(v) || ours.point(v) != cgal.point(v);
+    for(auto f : faces(cgal))
+      different += ours.halfedge(f) != cgal.halfedge(f);
+    EXPECT_EQ(different, 0u) << what;
+    ++compared;
+  };
+  Polygons closed;
+  Mesh fandisk;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
+  for(auto f : faces(fandisk))
+  {
+    closed.emplace_back();
+    for(auto v : vertices_around_face(halfedge(f, fandisk), fandisk))
+      closed.back().push_back(std::size_t(v));
+  }
+  const std::size_t n = 12;
+  Polygons grid;
+  for(std::size_t i = 0; i + 1 < n; ++i)
+    for(std::size_t j = 0; j + 1 < n; ++j)
+    {
+      const std::size_t a = i * n + j, b = a + 1, c = a + n, d = c + 1;
+      grid.push_back({a, b, d});
+      grid.push_back({a, d, c});
+    }
+  same(closed, num_vertices(fandisk), "fandisk");
+  same(grid, n * n, "grid");
+  same({{0, 1, 2, 3}, {3, 2, 4, 5}}, 6, "two quads");
+  std::mt19937 random(11);
+  for(int trial = 0; trial < 200; ++trial)
+  {
+    const bool on_grid = trial % 2 == 0;
+    Polygons p = on_grid ? grid : closed;
+    std::shuffle(p.begin(), p.end(), random); // faces in another order
+    const std::size_t nv = on_grid ? n * n : num_vertices(fandisk);
+    for(int k = 0; k < trial % 30; ++k) // faces removed
+      p.erase(p.begin() + std::ptrdiff_t(random() % p.size()));
+    std::size_t count = nv + 2; // two isolated vertices
+    if(trial % 3 == 0)          // a face flipped, then the soup oriented again (it may add vertices)
+    {
+      std::vector<std::size_t>& f = p[random() % p.size()];
+      std::reverse(f.begin(), f.end());
+      std::vector<K::Point_3> points(count);
+      PMP::orient_polygon_soup(points, p);
+      count = points.size();
+    }
+    same(p, count, "trial " + std::to_string(trial));
+  }
+  EXPECT_GT(compared, 100u);
+}
+
 // The OFF reader's number scanner (off_text::numbers()) reads every line as
 // the string stream of CGAL's OFF scanner does: the same numbers, bit for
 // bit, up to the same first word that is not one, on lines of random words

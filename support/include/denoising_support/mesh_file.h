@@ -155,6 +155,92 @@ inline bool is_oriented_manifold_soup(const std::vector<std::vector<std::size_t>
   return true;
 }
 
+// Builds `mesh` (empty) from a soup that passed is_oriented_manifold_soup(),
+// with the same vertex, edge, halfedge and face indices and the same links
+// as CGAL's polygon_soup_to_polygon_mesh() gives, faces added one by one
+// with Euler::add_face(), but in one pass over the polygons with a table of
+// directed edges instead of a search around each vertex per edge: the
+// vertices in soup order; the edges in the order the polygons first use
+// them, halfedge 2e running as in that polygon; each face's halfedge the
+// one from its last corner to its first; on a border the border halfedges
+// linked around it, and each vertex's halfedge its incoming border halfedge
+// if it has one, else its incoming halfedge in the last face around it
+// (where add_face() leaves it when that face closes the vertex's fan).
+inline void build_oriented_manifold_mesh(const std::vector<K::Point_3>& points,
+                                         const std::vector<std::vector<std::size_t>>& polygons, Mesh& mesh)
+{
+  typedef Mesh::Vertex_index V;
+  typedef Mesh::Halfedge_index H;
+  const std::size_t nv = points.size();
+  constexpr std::uint32_t none = std::uint32_t(-1);
+  // each vertex's outgoing directed edges: their end, then their halfedge once made
+  std::vector<std::size_t> offset(nv + 1, 0);
+  std::size_t corners = 0;
+  for(const auto& polygon : polygons)
+  {
+    corners += polygon.size();
+    for(std::size_t u : polygon)
+      ++offset[u + 1];
+  }
+  for(std::size_t v = 0; v < nv; ++v)
+    offset[v + 1] += offset[v];
+  std::vector<std::uint32_t> end(corners), made(corners, none);
+  {
+    std::vector<std::size_t> fill(offset.begin(), offset.end() - 1);
+    for(const auto& polygon : polygons)
+      for(std::size_t j = 0, n = polygon.size(); j < n; ++j)
+        end[fill[polygon[j]]++] = std::uint32_t(polygon[(j + 1) % n]);
+  }
+  const auto find = [&](std::size_t u, std::size_t v) -> std::size_t {
+    for(std::size_t i = offset[u]; i < offset[u + 1]; ++i)
+      if(end[i] == v)
+        return i;
+    return std::size_t(-1);
+  };
+  // at most one edge per corner: reserving more than is used touches no memory
+  mesh.reserve(Mesh::size_type(nv), Mesh::size_type(corners), Mesh::size_type(polygons.size()));
+  for(const K::Point_3& p : points)
+    mesh.add_vertex(p);
+  std::vector<std::uint32_t> incoming(nv, none);
+  std::vector<H> h;
+  for(const auto& polygon : polygons)
+  {
+    const std::size_t n = polygon.size();
+    h.resize(n);
+    for(std::size_t j = 0; j < n; ++j)
+    {
+      const std::size_t u = polygon[j], v = polygon[(j + 1) % n];
+      const std::size_t back = find(v, u);
+      h[j] = back != std::size_t(-1) && made[back] != none
+                 ? mesh.opposite(H(made[back]))
+                 : mesh.add_edge(V(Mesh::size_type(u)), V(Mesh::size_type(v)));
+      made[find(u, v)] = std::uint32_t(h[j]);
+    }
+    const Mesh::Face_index f = mesh.add_face();
+    mesh.set_halfedge(f, h[n - 1]);
+    for(std::size_t j = 0; j < n; ++j)
+    {
+      mesh.set_face(h[j], f);
+      mesh.set_next(h[j], h[(j + 1) % n]);
+      incoming[polygon[(j + 1) % n]] = std::uint32_t(h[j]);
+    }
+  }
+  // the border: one outgoing and one incoming border halfedge per border vertex
+  std::vector<std::uint32_t> outgoing_border(nv, none);
+  for(H b : halfedges(mesh))
+    if(mesh.is_border(b))
+      outgoing_border[std::size_t(mesh.source(b))] = std::uint32_t(b);
+  for(H b : halfedges(mesh))
+    if(mesh.is_border(b))
+    {
+      mesh.set_next(b, H(outgoing_border[std::size_t(mesh.target(b))]));
+      incoming[std::size_t(mesh.target(b))] = std::uint32_t(b);
+    }
+  for(std::size_t v = 0; v < nv; ++v)
+    if(incoming[v] != none)
+      mesh.set_halfedge(V(Mesh::size_type(v)), H(incoming[v]));
+}
+
 // The mesh of a polygon soup read from a file: a face may not use a vertex
 // twice; a soup that is not a manifold surface is repaired by
 // orient_polygon_soup() (vertices are duplicated on non-manifold edges and
@@ -179,7 +265,13 @@ inline std::string soup_to_mesh(Soup& soup, Mesh& mesh)
     if(!is_oriented_manifold_soup(soup.polygons, soup.points.size()))
       return "the faces do not form a surface, even after orient_polygon_soup()";
   }
-  PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
+  std::size_t corners = 0;
+  for(const auto& polygon : soup.polygons)
+    corners += polygon.size();
+  if(mesh.num_vertices() == 0 && mesh.num_edges() == 0 && mesh.num_faces() == 0 && corners < (std::size_t(1) << 31))
+    build_oriented_manifold_mesh(soup.points, soup.polygons, mesh);
+  else // appended to a mesh, or too big for 32-bit halfedge indices
+    PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
   return std::string();
 }
 
