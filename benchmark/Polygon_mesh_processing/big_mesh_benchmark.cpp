@@ -38,17 +38,6 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
-double status_mib(const char* key)
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  const std::size_t len = std::strlen(key);
-  while(std::getline(status, line))
-    if(line.compare(0, len, key) == 0)
-      return std::atof(line.c_str() + len) / 1024.;
-  return 0.;
-}
-
 template <typename NamedParameters>
 void denoise(Mesh& mesh, const NamedParameters& np, PMP::Intrinsic_denoising_report& report)
 {
@@ -73,7 +62,7 @@ int run(const std::string& mode, const std::string& name, int levels, double sig
   Mesh mesh = reference;
   PMP::add_gaussian_noise(mesh, sigma, CGAL::parameters::random_seed(1));
   const double noisy_En = PMP::face_normal_error(mesh, reference);
-  const double before = status_mib("VmRSS:");
+  const double before = denoising_support::status_mib("VmRSS:");
   {
     std::ofstream reset("/proc/self/clear_refs");
     reset << "5";
@@ -92,7 +81,7 @@ int run(const std::string& mode, const std::string& name, int levels, double sig
     return 1;
   }
   const double seconds = watch.seconds();
-  const double call_peak = status_mib("VmHWM:") - before;
+  const double call_peak = denoising_support::status_mib("VmHWM:") - before;
   std::printf("| %s x%d, %.2g | %zu | %s | %.2f | %.0f | %.3f | %.3f | %.1f / %.1fd / %u |\n", name.c_str(), levels,
               sigma, std::size_t(num_faces(mesh)), mode.c_str(), seconds, call_peak, noisy_En,
               PMP::face_normal_error(mesh, reference), report.sigma_range, report.relative_neighbor_radius,

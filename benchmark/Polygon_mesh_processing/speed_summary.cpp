@@ -191,17 +191,6 @@ static double process_peak_mib()
   return double(u.ru_maxrss) / 1024.; // kilobytes on Linux
 }
 
-static double status_mib(const char* key)
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  const std::size_t len = std::strlen(key);
-  while(std::getline(status, line))
-    if(line.compare(0, len, key) == 0)
-      return std::atof(line.c_str() + len) / 1024.;
-  return 0.;
-}
-
 static bool read_mesh(const char* name, Mesh& m)
 {
   if(!CGAL::IO::read_polygon_mesh(CGAL::data_file_path(name), m) || m.is_empty())
@@ -277,7 +266,7 @@ static int memory_row(int i)
   Mesh mesh = noisy_copy(in.reference);
   in.reference = Mesh(); // only the mesh being denoised stays
   in.reference.collect_garbage();
-  const double before = status_mib("VmRSS:");
+  const double before = denoising_support::status_mib("VmRSS:");
   {
     std::ofstream reset("/proc/self/clear_refs");
     reset << "5";
@@ -293,7 +282,8 @@ static int memory_row(int i)
 #endif
   });
   std::printf("| %s | %zu | %u | %.3f | %.0f | %.0f | %.0f | %.0f |\n", in.name.c_str(), (std::size_t)num_faces(mesh),
-              in.k, t, before, status_mib("VmHWM:"), status_mib("VmHWM:") - before, process_peak_mib());
+              in.k, t, before, denoising_support::status_mib("VmHWM:"),
+              denoising_support::status_mib("VmHWM:") - before, process_peak_mib());
   std::fflush(stdout);
   return 0;
 }

@@ -18,6 +18,8 @@
 
 #include <denoising_support/synthetic_meshes.h>
 
+#include "data_meshes.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -36,16 +38,7 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace D = CGAL::Polygon_mesh_processing::internal::Denoising;
 
-const Mesh& fandisk()
-{
-  static const Mesh m = [] {
-    Mesh f;
-    if(!CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), f) || f.is_empty())
-      throw std::runtime_error("cannot read fandisk");
-    return f;
-  }();
-  return m;
-}
+const Mesh& fandisk() { return data_mesh("meshes/fandisk.off"); }
 
 // CGAL's fandisk with Gaussian noise of sigma_E `sigma`, seed 1.
 Mesh fandisk_with_gaussian_noise(double sigma)

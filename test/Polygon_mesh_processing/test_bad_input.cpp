@@ -917,6 +917,37 @@ BAD_INPUT_CASE(OutputIsAtomicAndNeverOverwritesTheInput)
   return "";
 }
 
+namespace {
+
+// The faces of `mesh` as a soup (vertex indices, each face from its halfedge).
+std::vector<std::vector<std::size_t>> polygons_of(const Mesh& mesh)
+{
+  std::vector<std::vector<std::size_t>> polygons;
+  for(auto f : faces(mesh))
+  {
+    polygons.emplace_back();
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+      polygons.back().push_back(std::size_t(v));
+  }
+  return polygons;
+}
+
+// An open surface as a soup: the n x n grid of vertices, two triangles a cell.
+std::vector<std::vector<std::size_t>> grid_polygons(std::size_t n)
+{
+  std::vector<std::vector<std::size_t>> grid;
+  for(std::size_t i = 0; i + 1 < n; ++i)
+    for(std::size_t j = 0; j + 1 < n; ++j)
+    {
+      const std::size_t a = i * n + j, b = a + 1, c = a + n, d = c + 1;
+      grid.push_back({a, b, d});
+      grid.push_back({a, d, c});
+    }
+  return grid;
+}
+
+} // namespace
+
 // The readers' manifold test (is_oriented_manifold_soup()) answers as CGAL's
 // is_polygon_soup_a_polygon_mesh() on soups of every kind it must tell
 // apart: closed and open surfaces, faces removed from them (pinched
@@ -931,24 +962,11 @@ TEST(MeshFile, ManifoldSoupTestAgreesWithCgal)
     return cgal;
   };
   // a closed surface, an open one (an n x n grid) and two closed fans at one vertex
-  Polygons closed;
   Mesh fandisk;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
-  for(auto f : faces(fandisk))
-  {
-    closed.emplace_back();
-    for(auto v : vertices_around_face(halfedge(f, fandisk), fandisk))
-      closed.back().push_back(std::size_t(v));
-  }
+  const Polygons closed = polygons_of(fandisk);
   const std::size_t n = 12;
-  Polygons grid;
-  for(std::size_t i = 0; i + 1 < n; ++i)
-    for(std::size_t j = 0; j + 1 < n; ++j)
-    {
-      const std::size_t a = i * n + j, b = a + 1, c = a + n, d = c + 1;
-      grid.push_back({a, b, d});
-      grid.push_back({a, d, c});
-    }
+  const Polygons grid = grid_polygons(n);
   const Polygons two_tetrahedra = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2},
                                    {0, 4, 5}, {0, 5, 6}, {0, 6, 4}, {4, 6, 5}};
   const Polygons bowtie = {{0, 1, 2}, {0, 3, 4}};
@@ -1034,24 +1052,11 @@ TEST(MeshFile, DirectBuildIsCgalsBuild)
     EXPECT_EQ(different, 0u) << what;
     ++compared;
   };
-  Polygons closed;
   Mesh fandisk;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
-  for(auto f : faces(fandisk))
-  {
-    closed.emplace_back();
-    for(auto v : vertices_around_face(halfedge(f, fandisk), fandisk))
-      closed.back().push_back(std::size_t(v));
-  }
+  const Polygons closed = polygons_of(fandisk);
   const std::size_t n = 12;
-  Polygons grid;
-  for(std::size_t i = 0; i + 1 < n; ++i)
-    for(std::size_t j = 0; j + 1 < n; ++j)
-    {
-      const std::size_t a = i * n + j, b = a + 1, c = a + n, d = c + 1;
-      grid.push_back({a, b, d});
-      grid.push_back({a, d, c});
-    }
+  const Polygons grid = grid_polygons(n);
   same(closed, num_vertices(fandisk), "fandisk");
   same(grid, n * n, "grid");
   same({{0, 1, 2, 3}, {3, 2, 4, 5}}, 6, "two quads");

@@ -16,6 +16,8 @@
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include "data_meshes.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -33,16 +35,7 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace D = CGAL::Polygon_mesh_processing::internal::Denoising;
 
-const Mesh& fandisk()
-{
-  static const Mesh m = [] {
-    Mesh f;
-    if(!CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), f) || f.is_empty())
-      throw std::runtime_error("cannot read fandisk");
-    return f;
-  }();
-  return m;
-}
+const Mesh& fandisk() { return data_mesh("meshes/fandisk.off"); }
 
 D::Flat_mesh flat_of(const Mesh& m)
 {

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // What the benchmarks share: reading a triangle mesh of CGAL's data set,
-// timing with a wall-clock stopwatch and the quantiles of their summaries.
+// timing with a wall-clock stopwatch, memory figures of the process and the
+// quantiles of their summaries.
 
 #ifndef DENOISING_SUPPORT_BENCHMARK_COMMON_H
 #define DENOISING_SUPPORT_BENCHMARK_COMMON_H
@@ -13,6 +14,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -47,6 +51,19 @@ inline double quantile(std::vector<double> v, double q)
   std::sort(v.begin(), v.end());
   const std::size_t k = std::min(v.size() - 1, std::size_t(std::ceil(q * double(v.size()))) - (q > 0. ? 1 : 0));
   return v[k];
+}
+
+// A field of /proc/self/status in MiB ("VmRSS:", "VmHWM:", ...); 0 where
+// there is no such file or field.
+inline double status_mib(const char* key)
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  const std::size_t len = std::strlen(key);
+  while(std::getline(status, line))
+    if(line.compare(0, len, key) == 0)
+      return std::atof(line.c_str() + len) / 1024.;
+  return 0.;
 }
 
 } // namespace denoising_support

@@ -10,8 +10,8 @@
 // in; CMake passes their locations as DENOISING_RENDER_DIR and
 // DENOISING_THREE_JS.
 
-#ifndef DENOISING_COMPARISON_REPORT_H
-#define DENOISING_COMPARISON_REPORT_H
+#ifndef DENOISING_SUPPORT_COMPARISON_REPORT_H
+#define DENOISING_SUPPORT_COMPARISON_REPORT_H
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -304,4 +304,4 @@ inline std::string write_report(const std::string& html_path, const Report& repo
 
 } // namespace denoising_report
 
-#endif // DENOISING_COMPARISON_REPORT_H
+#endif // DENOISING_SUPPORT_COMPARISON_REPORT_H

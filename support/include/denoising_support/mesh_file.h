@@ -1,10 +1,10 @@
 // The mesh-file entry of the command-line program, shared with the fuzz
-// harness (fuzz/fuzz_denoise_off.cpp) and the tests: read a mesh from bytes or
+// harness (fuzz/Polygon_mesh_processing/fuzz_mesh_file.cpp) and the tests: read a mesh from bytes or
 // a file, validate it, denoise it, write the result atomically. Every function
 // reports failure as a one-line message instead of crashing.
 
-#ifndef CGAL_DENOISING_EXAMPLES_DENOISE_MESH_FILE_H
-#define CGAL_DENOISING_EXAMPLES_DENOISE_MESH_FILE_H
+#ifndef DENOISING_SUPPORT_MESH_FILE_H
+#define DENOISING_SUPPORT_MESH_FILE_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

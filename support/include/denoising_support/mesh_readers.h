@@ -5,8 +5,8 @@
 // every count is bounded by the data's size before anything is allocated from
 // it, coordinates must be finite and indices in range.
 
-#ifndef CGAL_DENOISING_EXAMPLES_DENOISE_MESH_READERS_H
-#define CGAL_DENOISING_EXAMPLES_DENOISE_MESH_READERS_H
+#ifndef DENOISING_SUPPORT_MESH_READERS_H
+#define DENOISING_SUPPORT_MESH_READERS_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 

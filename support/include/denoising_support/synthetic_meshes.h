@@ -6,8 +6,8 @@
 // the paper's section 5.2; and a mesh joined with a scaled copy of itself.
 // Shared by the tests and the benchmarks.
 
-#ifndef CGAL_DENOISING_TEST_SYNTHETIC_MESHES_H
-#define CGAL_DENOISING_TEST_SYNTHETIC_MESHES_H
+#ifndef DENOISING_SUPPORT_SYNTHETIC_MESHES_H
+#define DENOISING_SUPPORT_SYNTHETIC_MESHES_H
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
