@@ -48,7 +48,7 @@
 
 namespace py = pybind11;
 namespace PMP = CGAL::Polygon_mesh_processing;
-typedef denoise_file::Mesh Mesh;
+typedef denoising_support::Mesh Mesh;
 typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
 typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
 typedef CGAL::Parallel_if_available_tag Tag;
@@ -127,7 +127,7 @@ std::unique_ptr<Input> make_input(const py::handle& V, const py::handle& F, cons
   const auto v = read_vertices(V, vname);
   const std::size_t rows = static_cast<std::size_t>(v.shape(0));
   const auto f = read_faces(F, rows, fname);
-  denoise_file::Soup soup;
+  denoising_support::Soup soup;
   soup.points.reserve(rows);
   for(std::size_t i = 0; i < rows; ++i)
     soup.points.emplace_back(v.data()[3 * i], v.data()[3 * i + 1], v.data()[3 * i + 2]);
@@ -137,7 +137,7 @@ std::unique_ptr<Input> make_input(const py::handle& V, const py::handle& F, cons
                         static_cast<std::size_t>(f.data()[3 * i + 2])};
   auto input = std::make_unique<Input>();
   input->rows = rows;
-  const std::string problem = denoise_file::soup_to_mesh(soup, input->mesh);
+  const std::string problem = denoising_support::soup_to_mesh(soup, input->mesh);
   if(!problem.empty())
     throw py::value_error(std::string(fname) + ": " + problem);
   input->duplicated_vertices = num_vertices(input->mesh) - rows;
@@ -412,7 +412,7 @@ py::tuple denoise(const py::handle& V, const py::handle& F, const py::object& co
 
   std::unique_ptr<Input> input = make_input(V, F);
   auto constrained_vertices = constrained_map(*input, constrained);
-  auto normals = input->mesh.add_property_map<face_descriptor, denoise_file::K::Vector_3>("f:py_normal").first;
+  auto normals = input->mesh.add_property_map<face_descriptor, denoising_support::K::Vector_3>("f:py_normal").first;
   const Thread_limit limit(threads);
 
   // Called from the calling thread after each iteration: Ctrl-C and the
@@ -824,7 +824,7 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
         std::string problem;
         {
           py::gil_scoped_release release;
-          problem = denoise_file::read_mesh_file(path, mesh, &warnings);
+          problem = denoising_support::read_mesh_file(path, mesh, &warnings);
         }
         if(problem.rfind("cannot open", 0) == 0)
         {
@@ -851,7 +851,7 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
         std::string problem;
         {
           py::gil_scoped_release release;
-          problem = denoise_file::write_mesh(path, input->mesh);
+          problem = denoising_support::write_mesh(path, input->mesh);
         }
         if(problem.rfind("cannot write", 0) == 0)
         {

@@ -27,8 +27,8 @@
 
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/noise_estimate.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/noise_estimate.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter/filter_iterations.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -87,19 +87,19 @@ static std::vector<Input> make_inputs(const std::string& only, const std::vector
       {"fandisk", "CAD", [](Mesh& m) { return load("fandisk.off", m); }, 0.5, 0.2},
       {"octahedron", "synthetic CAD",
        [](Mesh& m) {
-         m = denoising_test::graded_octahedron<Mesh>(17, 1.4);
+         m = denoising_support::graded_octahedron<Mesh>(17, 1.4);
          return true;
        },
        0.3, 0.},
       {"prism", "synthetic CAD",
        [](Mesh& m) {
-         m = denoising_test::benchmark_prism<Mesh>();
+         m = denoising_support::benchmark_prism<Mesh>();
          return true;
        },
        0.1, 0.},
       {"cube", "synthetic CAD",
        [](Mesh& m) {
-         m = denoising_test::cube<Mesh>(24);
+         m = denoising_support::cube<Mesh>(24);
          return true;
        },
        0.2, 0.},

@@ -62,9 +62,9 @@
 
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/residual_statistics.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/automatic_selection.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/residual_statistics.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter/filter_iterations.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 #include <CGAL/Polygon_mesh_processing/smooth_shape.h>
 

@@ -151,7 +151,7 @@ int main(int argc, char** argv)
       return 1;
     }
     models.push_back({"fandisk", fandisk, 0.3});
-    models.push_back({"hexagonal prism", denoising_test::benchmark_prism<Mesh>(), 0.1});
+    models.push_back({"hexagonal prism", denoising_support::benchmark_prism<Mesh>(), 0.1});
   }
   std::printf("Geodesic vs square-pattern paths (paper figure 2): k = 30, v = 2, r = 4d, sigma_s = sigma_r = 0.4,\n"
               "Gaussian noise seed 1; times: minimum of %d run(s)\n\n",

@@ -39,7 +39,7 @@ double best_of_three(const std::function<void()>& f)
 
 int main(int argc, char** argv)
 {
-  namespace df = denoise_file;
+  namespace df = denoising_support;
   const int levels = argc > 1 ? std::atoi(argv[1]) : 2;
   const std::filesystem::path dir = argc > 2 ? std::filesystem::path(argv[2]) : std::filesystem::temp_directory_path();
   df::Mesh mesh;

@@ -107,14 +107,14 @@ int main(int argc, char** argv)
     models.push_back({"fandisk", fandisk, 0.3, 2.27, 6.35, "1e-3", {0.5, 0.5, 5., 30, 2}});
   }
   models.push_back({"octahedron (graded)",
-                    denoising_test::graded_octahedron<Mesh>(17, 1.4),
+                    denoising_support::graded_octahedron<Mesh>(17, 1.4),
                     0.3,
                     2.03,
                     2.91,
                     "1e-3",
                     {0.6, 0.6, 5., 50, 2}});
   models.push_back(
-      {"prism (18 edges)", denoising_test::benchmark_prism<Mesh>(), 0.1, 0.46, 2.77, "1e-2", {0.3, 0.3, 5., 75, 2}});
+      {"prism (18 edges)", denoising_support::benchmark_prism<Mesh>(), 0.1, 0.46, 2.77, "1e-2", {0.3, 0.3, 5., 75, 2}});
 
   const Setting defaults = {0.4, 0.4, 4., 30, 2}; // the package's defaults
 

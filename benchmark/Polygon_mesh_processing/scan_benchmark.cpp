@@ -631,7 +631,7 @@ void probe_one(const std::string& name, const Mesh& noisy, const Mesh& truth)
   const double a1 = PMP::face_normal_error(s30, noisy), a2 = PMP::face_normal_error(s60, s30);
   std::printf("%-34s %7zu %6.3f %5s %3u %7.2f %7.2f %7.2f %7.2f %7.2f %7.2f %7.3f %6.3f\n", name.c_str(),
               std::size_t(num_faces(noisy)), single_view_share(noisy),
-              denoise_file::short_selection(a.report) ? "short" : "-", a.report.iterations,
+              denoising_support::short_selection(a.report) ? "short" : "-", a.report.iterations,
               PMP::face_normal_error(noisy, truth), PMP::face_normal_error(a.mesh, truth),
               PMP::face_normal_error(f, truth), PMP::face_normal_error(s60, truth), a1, a2, a2 / a1,
               a.report.second_pass_angle / std::max(1e-12, a.report.change_angle));

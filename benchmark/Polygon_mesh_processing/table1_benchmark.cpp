@@ -282,7 +282,7 @@ int main(int argc, char** argv)
   };
   if(selected(model_list, "octahedron"))
     models.push_back({"octahedron",
-                      denoising_test::graded_octahedron<Mesh>(17, 1.4),
+                      denoising_support::graded_octahedron<Mesh>(17, 1.4),
                       0.3,
                       false,
                       {12.81, 10.65, 6.85, 5.27, 3.33, 3.36, 2.03},
@@ -303,7 +303,7 @@ int main(int argc, char** argv)
   }
   if(selected(model_list, "prism"))
     models.push_back({"prism",
-                      denoising_test::benchmark_prism<Mesh>(),
+                      denoising_support::benchmark_prism<Mesh>(),
                       0.1,
                       false,
                       {4.98, 4.48, 3.29, 3.87, 0.71, 0.87, 0.46},
@@ -391,7 +391,7 @@ int main(int argc, char** argv)
       for(std::size_t k : method_index)
         shown.emplace_back(all_methods[k].name, &results[mi][k]);
       shown.emplace_back("reference", &reference_result);
-      denoising_report::Report report;
+      denoising_support::Report report;
       char title[256];
       std::snprintf(title, sizeof(title),
                     "%s, Gaussian noise sigma_E %.1f (seed 1): best setting of each method by E_n", model.name.c_str(),
@@ -402,7 +402,7 @@ int main(int argc, char** argv)
       report.heat_max = model.heat_max;
       for(const auto& item : shown)
       {
-        report.entries.push_back(denoising_report::make_entry(item.first, item.second->output, &model.reference));
+        report.entries.push_back(denoising_support::make_entry(item.first, item.second->output, &model.reference));
         report.entries.back().En = item.second->En;
         report.entries.back().Ev = item.second->Ev;
         report.entries.back().seconds = item.second->seconds;
@@ -427,7 +427,7 @@ int main(int argc, char** argv)
       if(!report_dir.empty())
       {
         std::filesystem::create_directories(report_dir);
-        const std::string error = denoising_report::write_report(report_dir + "/" + model.name + ".html", report);
+        const std::string error = denoising_support::write_report(report_dir + "/" + model.name + ".html", report);
         if(!error.empty())
         {
           std::cerr << error << "\n";

@@ -37,7 +37,7 @@
 
 namespace po = boost::program_options;
 namespace PMP = CGAL::Polygon_mesh_processing;
-typedef denoise_file::Mesh Mesh;
+typedef denoising_support::Mesh Mesh;
 
 namespace {
 
@@ -343,7 +343,7 @@ std::string check_method_options(const Method_settings& m, const po::variables_m
        !denoising_support::find_classic_method<CGAL::Sequential_tag, Mesh>(m.method)->filters_normals)
       return "--relax applies to --method intrinsic, SRML07, ZFAT11 and ZDZ15 only";
   }
-  if(vm.count("report") && denoise_file::extension(m.report) != "html")
+  if(vm.count("report") && denoising_support::extension(m.report) != "html")
     return "--report needs a .html file name, not '" + m.report + "'";
   return std::string();
 }
@@ -369,7 +369,7 @@ std::string run_classic(Mesh& mesh, const std::string& method, bool relax)
 std::string write_cli_report(const Method_settings& m, const std::string& input_name, bool noisy, const Mesh& input,
                              const Mesh& denoised, const Mesh* reference, double seconds)
 {
-  namespace R = denoising_report;
+  namespace R = denoising_support;
   R::Report report;
   report.title = input_name + ": " + m.method;
   report.entries.push_back(R::make_entry(noisy ? "noisy input" : "input", input, reference));
@@ -454,7 +454,7 @@ void run_intrinsic(Intrinsic_run& run, const NamedParameters& np)
   {
     // One concurrency tag only (the stages above multiply the instantiations);
     // --threads 1 limits TBB to one thread instead (see main()).
-    run.problem = denoise_file::denoise<CGAL::Parallel_if_available_tag>(run.mesh, np, &run.report);
+    run.problem = denoising_support::denoise<CGAL::Parallel_if_available_tag>(run.mesh, np, &run.report);
   }
 }
 
@@ -537,14 +537,14 @@ int main(int argc, char** argv)
   }
   if(!method.report.empty())
   {
-    const std::string missing = denoising_report::check_report_files();
+    const std::string missing = denoising_support::check_report_files();
     if(!missing.empty())
       return fail(exit_input, missing);
   }
   if(s.output.empty())
-    s.output = denoise_file::output_path(s.input);
+    s.output = denoising_support::output_path(s.input);
   {
-    const std::string ext = denoise_file::extension(s.output);
+    const std::string ext = denoising_support::extension(s.output);
     if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
       return fail(exit_usage, "unknown output format '" + ext + "' (OFF, OBJ, PLY and STL are written)");
   }
@@ -563,13 +563,13 @@ int main(int argc, char** argv)
       std::cerr << "denoise: warning: '" << file << "': " << w << "\n";
     warnings.clear();
   };
-  std::string problem = denoise_file::read_mesh_file(s.input, input, &warnings);
+  std::string problem = denoising_support::read_mesh_file(s.input, input, &warnings);
   if(!problem.empty())
     return fail(exit_input, problem);
   warn(s.input);
   if(!s.reference.empty())
   {
-    problem = denoise_file::read_mesh_file(s.reference, reference, &warnings);
+    problem = denoising_support::read_mesh_file(s.reference, reference, &warnings);
     if(!problem.empty())
       return fail(exit_input, "reference " + problem);
     warn(s.reference);
@@ -610,7 +610,7 @@ int main(int argc, char** argv)
     }
     if(!s.noisy_output.empty())
     {
-      problem = denoise_file::write_mesh(s.noisy_output, input, s.input);
+      problem = denoising_support::write_mesh(s.noisy_output, input, s.input);
       if(!problem.empty())
         return fail(exit_input, problem);
     }
@@ -682,7 +682,7 @@ int main(int argc, char** argv)
               << (s.no_fold_guard ? ", no fold guard" : "")
               << (s.vertex_update == "paper" ? "" : ", least-squares vertex update") << ", threads " << s.threads
               << "\n";
-    std::cout << denoise_file::describe(run.report);
+    std::cout << denoising_support::describe(run.report);
   }
 
   if(!s.reference.empty())
@@ -702,7 +702,7 @@ int main(int argc, char** argv)
     }
   }
 
-  problem = denoise_file::write_mesh(s.output, denoised, s.input);
+  problem = denoising_support::write_mesh(s.output, denoised, s.input);
   if(!problem.empty())
     return fail(exit_input, problem);
   if(talk)
@@ -714,7 +714,7 @@ int main(int argc, char** argv)
     if(!problem.empty())
       return fail(exit_input, problem);
     if(talk)
-      std::cout << "report: " << method.report << " (table: " << denoising_report::table_path(method.report) << ")\n";
+      std::cout << "report: " << method.report << " (table: " << denoising_support::table_path(method.report) << ")\n";
   }
   return exit_ok;
 }

@@ -58,10 +58,10 @@ int main(int argc, char** argv)
               << PMP::face_normal_error(noisy, reference) << " deg, E_v "
               << PMP::vertex_position_error(noisy, reference) << "\n";
     std::cout << "parameters: k = 30, v = 2, r = 4d, sigma_s = sigma_r = 0.4, Parallel_if_available_tag\n\n";
-    denoising_report::Report report;
+    denoising_support::Report report;
     report.title = path + ", noise sigma_E 0.3 (seed 1): exact geodesic paths against the square pattern "
                           "(k = 30, v = 2, r = 4d, sigma = 0.4)";
-    report.entries.push_back(denoising_report::make_entry("noisy", noisy, &reference));
+    report.entries.push_back(denoising_support::make_entry("noisy", noisy, &reference));
     report.entries.back().En = PMP::face_normal_error(noisy, reference);
     report.entries.back().Ev = PMP::vertex_position_error(noisy, reference);
     std::printf("%-15s %10s %10s %12s %14s\n", "strategy", "E_n (deg)", "E_v", "paths (s)", "filtering (s)");
@@ -79,7 +79,7 @@ int main(int argc, char** argv)
       });
       const double t_total = seconds([&] { PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(denoised, np); });
       const char* name = strategy == PMP::Intrinsic_path_strategy::GEODESIC ? "geodesic paths" : "square pattern";
-      report.entries.push_back(denoising_report::make_entry(name, denoised, &reference));
+      report.entries.push_back(denoising_support::make_entry(name, denoised, &reference));
       report.entries.back().En = PMP::face_normal_error(denoised, reference);
       report.entries.back().Ev = PMP::vertex_position_error(denoised, reference);
       report.entries.back().seconds = t_total;
@@ -90,10 +90,10 @@ int main(int argc, char** argv)
     }
     if(argc > 2)
     {
-      report.entries.push_back(denoising_report::make_entry("reference", reference, &reference));
+      report.entries.push_back(denoising_support::make_entry("reference", reference, &reference));
       report.entries.back().En = 0.;
       report.entries.back().Ev = 0.;
-      const std::string problem = denoising_report::write_report(argv[2], report);
+      const std::string problem = denoising_support::write_report(argv[2], report);
       if(!problem.empty())
       {
         std::cerr << "error: " << problem << "\n";

@@ -65,7 +65,7 @@ static void report(const char* name, const Mesh& mesh, Mesh::Property_map<V, Col
 
 int main()
 {
-  Mesh mesh = denoising_test::plane_grid<Mesh>(40);
+  Mesh mesh = denoising_support::plane_grid<Mesh>(40);
   auto noisy = mesh.add_property_map<V, Color>("v:noisy").first;
   auto out = mesh.add_property_map<V, Color>("v:out").first;
   std::mt19937 rng(1);

@@ -23,8 +23,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
   const std::string bytes(reinterpret_cast<const char*>(data), size);
   std::istringstream in(bytes);
-  denoise_file::Mesh mesh;
-  const std::string problem = denoise_file::read_mesh(in, FUZZ_FORMAT, size, mesh);
+  denoising_support::Mesh mesh;
+  const std::string problem = denoising_support::read_mesh(in, FUZZ_FORMAT, size, mesh);
   if(!problem.empty())
   {
     if(problem.find('\n') != std::string::npos || !mesh.is_empty())
@@ -34,7 +34,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // a valid mesh: denoising must succeed and give finite coordinates
   if(num_faces(mesh) > 2000)
     return 0; // keep each input fast; the size does not change the code paths
-  const std::string failure = denoise_file::denoise(mesh, CGAL::parameters::number_of_iterations(3));
+  const std::string failure = denoising_support::denoise(mesh, CGAL::parameters::number_of_iterations(3));
   if(!failure.empty())
   {
     std::fprintf(stderr, "denoising a valid mesh failed: %s\n", failure.c_str());

@@ -54,7 +54,7 @@ struct Errors
 template <typename Denoise>
 Errors noisy_plane(const char* name, const Denoise& denoise)
 {
-  Mesh plane = denoising_test::plane_grid<Mesh>(30);
+  Mesh plane = denoising_support::plane_grid<Mesh>(30);
   const Mesh reference = plane;
   PMP::add_gaussian_noise(plane, 0.3, CGAL::parameters::random_seed(7));
   const double before = PMP::face_normal_error(plane, reference);
@@ -68,7 +68,7 @@ Errors noisy_plane(const char* name, const Denoise& denoise)
 template <typename Denoise>
 Errors noise_free_cube(const char* name, const Denoise& denoise)
 {
-  Mesh cube = denoising_test::cube<Mesh>(12);
+  Mesh cube = denoising_support::cube<Mesh>(12);
   const Mesh reference = cube;
   denoise(cube);
   const Errors e = {PMP::face_normal_error(cube, reference), PMP::vertex_position_error(cube, reference)};
@@ -81,8 +81,8 @@ Errors noise_free_cube(const char* name, const Denoise& denoise)
 template <typename Denoise>
 double surface_mesh_vs_polyhedron(const Denoise& denoise)
 {
-  Mesh sm = denoising_test::graded_octahedron<Mesh>(9, 1.4);
-  Polyhedron poly = denoising_test::graded_octahedron<Polyhedron>(9, 1.4);
+  Mesh sm = denoising_support::graded_octahedron<Mesh>(9, 1.4);
+  Polyhedron poly = denoising_support::graded_octahedron<Polyhedron>(9, 1.4);
   PMP::add_gaussian_noise(sm, 0.3, CGAL::parameters::random_seed(3));
   PMP::add_gaussian_noise(poly, 0.3, CGAL::parameters::random_seed(3));
   EXPECT_EQ(max_distance(positions(sm), positions(poly)), 0.);
@@ -98,7 +98,7 @@ double surface_mesh_vs_polyhedron(const Denoise& denoise)
 template <typename Denoise>
 void constrained_vertices_do_not_move(const Denoise& denoise)
 {
-  Mesh mesh = denoising_test::plane_grid<Mesh>(12);
+  Mesh mesh = denoising_support::plane_grid<Mesh>(12);
   PMP::add_gaussian_noise(mesh, 0.3, CGAL::parameters::random_seed(2));
   auto pinned = mesh.add_property_map<Mesh::Vertex_index, bool>("v:pinned", false).first;
   for(auto v : vertices(mesh))
@@ -121,7 +121,7 @@ void constrained_vertices_do_not_move(const Denoise& denoise)
 template <typename Sequential, typename Parallel>
 double parallel_vs_sequential(const Sequential& sequential, const Parallel& parallel)
 {
-  Mesh a = denoising_test::graded_octahedron<Mesh>(33, 1.4);
+  Mesh a = denoising_support::graded_octahedron<Mesh>(33, 1.4);
   PMP::add_gaussian_noise(a, 0.3, CGAL::parameters::random_seed(5));
   Mesh b = a;
   sequential(a);

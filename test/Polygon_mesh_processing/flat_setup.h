@@ -7,8 +7,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/face_data.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/flat_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh/face_data.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh/flat_mesh.h>
 
 namespace D = CGAL::Polygon_mesh_processing::internal::Denoising;
 

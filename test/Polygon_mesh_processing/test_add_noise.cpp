@@ -60,8 +60,8 @@ std::vector<K::Point_3> expect_seeded(const Mesh& mesh, Polyhedron polyhedron, u
 
 TEST(AddNoise, SameSeedSameNoiseOtherSeedOtherNoise)
 {
-  const Mesh mesh = denoising_test::cube<Mesh>(5);
-  const auto after = expect_seeded(mesh, denoising_test::cube<Polyhedron>(5), 11, [](auto& m, unsigned int seed) {
+  const Mesh mesh = denoising_support::cube<Mesh>(5);
+  const auto after = expect_seeded(mesh, denoising_support::cube<Polyhedron>(5), 11, [](auto& m, unsigned int seed) {
     PMP::add_gaussian_noise(m, 0.3, CGAL::parameters::random_seed(seed));
   });
   EXPECT_NE(after, positions(mesh));
@@ -71,7 +71,7 @@ TEST(AddNoise, GaussianAlongNormalsWithRelativeSigma)
 {
   // plane grid with cells of side 1/40: mean edge length (1 + 1 + sqrt 2)/3 / 40 on
   // interior cells; noise is along +-z only
-  Mesh mesh = denoising_test::plane_grid<Mesh>(40);
+  Mesh mesh = denoising_support::plane_grid<Mesh>(40);
   const auto before = positions(mesh);
   const double mean_edge = mean_edge_length(mesh);
   PMP::add_gaussian_noise(mesh, 0.2, CGAL::parameters::random_seed(3));
@@ -93,7 +93,7 @@ TEST(AddNoise, GaussianAlongNormalsWithRelativeSigma)
 
 TEST(AddNoise, ImpulsiveNoiseMovesAboutTheGivenFraction)
 {
-  Mesh mesh = denoising_test::plane_grid<Mesh>(40);
+  Mesh mesh = denoising_support::plane_grid<Mesh>(40);
   const auto before = positions(mesh);
   PMP::add_impulsive_noise(mesh, 0.1, 1.0, CGAL::parameters::random_seed(8));
   const auto after = positions(mesh);
@@ -106,7 +106,7 @@ TEST(AddNoise, ImpulsiveNoiseMovesAboutTheGivenFraction)
 
 TEST(AddNoise, BadArgumentsThrowAndLeaveTheMesh)
 {
-  Mesh mesh = denoising_test::plane_grid<Mesh>(4);
+  Mesh mesh = denoising_support::plane_grid<Mesh>(4);
   const auto before = positions(mesh);
   EXPECT_THROW(PMP::add_gaussian_noise(mesh, -0.1), std::invalid_argument);
   EXPECT_THROW(PMP::add_impulsive_noise(mesh, 1.5, 0.1), std::invalid_argument);
@@ -121,10 +121,10 @@ TEST(AddNoise, BadArgumentsThrowAndLeaveTheMesh)
 // length; the same for Surface_mesh and Polyhedron_3; bad sigma throws.
 TEST(AddNoise, DepthScanNoiseAlongRaysFromOneCamera)
 {
-  const Mesh a = denoising_test::cube<Mesh>(8);
+  const Mesh a = denoising_support::cube<Mesh>(8);
   const auto before = positions(a);
   const double mean_edge = mean_edge_length(a);
-  const auto after = expect_seeded(a, denoising_test::cube<Polyhedron>(8), 5, [](auto& m, unsigned int seed) {
+  const auto after = expect_seeded(a, denoising_support::cube<Polyhedron>(8), 5, [](auto& m, unsigned int seed) {
     PMP::add_depth_scan_noise(m, 0.3, CGAL::parameters::random_seed(seed));
   });
 
@@ -157,7 +157,7 @@ TEST(AddNoise, DepthScanNoiseAlongRaysFromOneCamera)
   EXPECT_GT(rms, 0.5 * 0.3 * mean_edge);
   EXPECT_LT(rms, 2. * 0.3 * mean_edge);
 
-  Mesh d = denoising_test::cube<Mesh>(3);
+  Mesh d = denoising_support::cube<Mesh>(3);
   const auto d_before = positions(d);
   EXPECT_THROW(PMP::add_depth_scan_noise(d, -0.1), std::invalid_argument);
   EXPECT_THROW(PMP::add_depth_scan_noise(d, std::nan("")), std::invalid_argument);
@@ -171,12 +171,13 @@ TEST(AddNoise, DepthScanNoiseAlongRaysFromOneCamera)
 // without the constraint; bad sigma throws and leaves the mesh.
 TEST(AddNoise, IsotropicNoiseHasTheRelativeRmsAndNoPreferredDirection)
 {
-  const Mesh mesh = denoising_test::plane_grid<Mesh>(40);
+  const Mesh mesh = denoising_support::plane_grid<Mesh>(40);
   const auto before = positions(mesh);
   const double mean_edge = mean_edge_length(mesh);
-  const auto after = expect_seeded(mesh, denoising_test::plane_grid<Polyhedron>(40), 4, [](auto& m, unsigned int seed) {
-    PMP::add_isotropic_gaussian_noise(m, 0.2, CGAL::parameters::random_seed(seed));
-  });
+  const auto after =
+      expect_seeded(mesh, denoising_support::plane_grid<Polyhedron>(40), 4, [](auto& m, unsigned int seed) {
+        PMP::add_isotropic_gaussian_noise(m, 0.2, CGAL::parameters::random_seed(seed));
+      });
 
   double axis2[3] = {0., 0., 0.};
   for(std::size_t i = 0; i < after.size(); ++i)
@@ -191,7 +192,7 @@ TEST(AddNoise, IsotropicNoiseHasTheRelativeRmsAndNoPreferredDirection)
   for(int c = 0; c < 3; ++c)
     EXPECT_NEAR(axis2[c] / total, 1. / 3., 0.1 / 3.);
 
-  Mesh pinned = denoising_test::plane_grid<Mesh>(40);
+  Mesh pinned = denoising_support::plane_grid<Mesh>(40);
   auto constrained = pinned.add_property_map<Mesh::Vertex_index, bool>("v:pinned", false).first;
   const Mesh::Vertex_index v0(7);
   put(constrained, v0, true);

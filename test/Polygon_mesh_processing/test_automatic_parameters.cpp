@@ -8,10 +8,10 @@
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/noise_estimate.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/sparse_noise.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/automatic_selection.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/noise_estimate.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/sparse_noise.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods/neighborhoods.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -125,8 +125,8 @@ TEST(AutomaticParameters, NoiseEstimateGrowsWithNoiseAndVanishesWithout)
     }
     last = e;
   }
-  EXPECT_LT(estimate(denoising_test::cube<Mesh>(12)), 1e-6);
-  Mesh noisy_cube = denoising_test::cube<Mesh>(12);
+  EXPECT_LT(estimate(denoising_support::cube<Mesh>(12)), 1e-6);
+  Mesh noisy_cube = denoising_support::cube<Mesh>(12);
   PMP::add_gaussian_noise(noisy_cube, 0.2, CGAL::parameters::random_seed(3));
   EXPECT_NEAR(estimate(noisy_cube), 0.2, 0.03);
 }
@@ -147,7 +147,7 @@ TEST(AutomaticParameters, NoiseEstimateIsScaleFree)
 // cube's edges stay sharp: every face keeps its normal.
 TEST(AutomaticParameters, NoiseFreeCubeStopsAtOnceAndStaysSharp)
 {
-  const Mesh reference = denoising_test::cube<Mesh>(10);
+  const Mesh reference = denoising_support::cube<Mesh>(10);
   Mesh m = reference;
   const PMP::Intrinsic_denoising_report r = PMP::intrinsic_denoising(m);
   EXPECT_TRUE(r.automatic_parameters);
@@ -323,7 +323,7 @@ namespace {
 // fairly regular mesh.
 Mesh sphere(int n)
 {
-  Mesh m = denoising_test::cube<Mesh>(n);
+  Mesh m = denoising_support::cube<Mesh>(n);
   double cx = 0., cy = 0., cz = 0.;
   for(auto v : vertices(m))
   {
@@ -398,7 +398,7 @@ TEST(AutomaticParameters, SelectionFindsTheKnownBestCandidate)
   };
   const double narrowest = D::Selection_rules::candidates[0].sigma;
   const double widest = D::Selection_rules::candidates[D::Selection_rules::number_of_candidates - 1].sigma;
-  std::vector<Case> cases = {{"cube", denoising_test::cube<Mesh>(16), narrowest, 1.},
+  std::vector<Case> cases = {{"cube", denoising_support::cube<Mesh>(16), narrowest, 1.},
                              {"sphere", sphere(16), widest, 1.1}};
   for(const Case& c : cases)
   {
@@ -621,7 +621,7 @@ TEST(AutomaticParameters, ResidualStatisticsByHand)
 // own at every vertex instead, the residual is rough and the noise dense.
 TEST(SparseNoise, SpikesOverASmoothResidualAreFlagged)
 {
-  const Mesh grid = denoising_test::plane_grid<Mesh>(20);
+  const Mesh grid = denoising_support::plane_grid<Mesh>(20);
   const D::Flat_mesh m = D::make_flat_mesh(grid, get(CGAL::vertex_point, grid), get(CGAL::vertex_index, grid),
                                            get(CGAL::face_index, grid), "test");
   const D::Csr adjacency = D::vertex_adjacency(m);
@@ -1028,8 +1028,8 @@ TEST(SparseNoise, APartAtAThousandthOfTheScaleIsDenoisedToo)
 {
   Mesh noisy = fandisk();
   PMP::add_gaussian_noise(noisy, 0.3, CGAL::parameters::random_seed(1));
-  const Mesh truth = denoising_test::with_scaled_copy(fandisk(), 0.001, 5.);
-  Mesh both = denoising_test::with_scaled_copy(noisy, 0.001, 5.);
+  const Mesh truth = denoising_support::with_scaled_copy(fandisk(), 0.001, 5.);
+  Mesh both = denoising_support::with_scaled_copy(noisy, 0.001, 5.);
   ASSERT_EQ(num_faces(both), 2 * num_faces(fandisk()));
 
   const D::Flat_mesh m = flat_of(both);

@@ -180,7 +180,7 @@ std::string every_function_throws_and_leaves_unchanged(const Mesh& mesh, const c
 
 Mesh noisy_plane(int n, unsigned int seed, double sigma = 0.3)
 {
-  Mesh m = denoising_test::plane_grid<Mesh>(n);
+  Mesh m = denoising_support::plane_grid<Mesh>(n);
   PMP::add_gaussian_noise(m, sigma, CGAL::parameters::random_seed(seed));
   return m;
 }
@@ -267,7 +267,7 @@ BAD_INPUT_CASE(InfiniteCoordinateThrowsAndLeavesEverythingUnchanged)
 BAD_INPUT_CASE(SurfaceMeshWithGarbageIsDenoised)
 {
   const Mesh flat = [] {
-    Mesh f = denoising_test::plane_grid<Mesh>(8);
+    Mesh f = denoising_support::plane_grid<Mesh>(8);
     f.remove_face(*f.faces().begin());
     f.collect_garbage();
     return f;
@@ -370,7 +370,7 @@ BAD_INPUT_CASE(IsolatedVerticesDoNotMove)
 // vertices: the halves are denoised independently; a flat input stays flat.
 BAD_INPUT_CASE(DuplicatedVerticesAlongASeam)
 {
-  denoising_test::Soup left, right;
+  denoising_support::Soup_builder left, right;
   left.add_subdivided_quad({0., 0., 0.}, {0.5, 0., 0.}, {0., 1., 0.}, 4, 8, false);
   right.add_subdivided_quad({0.5, 0., 0.}, {0.5, 0., 0.}, {0., 1., 0.}, 4, 8, false);
   std::vector<K::Point_3> points;
@@ -405,7 +405,7 @@ BAD_INPUT_CASE(DuplicatedVerticesAlongASeam)
 // neighbourhoods never cross from one to the other).
 BAD_INPUT_CASE(SeveralConnectedComponentsAreIndependent)
 {
-  Mesh a = denoising_test::cube<Mesh>(6);
+  Mesh a = denoising_support::cube<Mesh>(6);
   PMP::add_gaussian_noise(a, 0.2, CGAL::parameters::random_seed(8));
   const std::size_t n = num_vertices(a);
   // a second copy of the same noisy cube, shifted by 8 (exact in floating
@@ -473,7 +473,7 @@ BAD_INPUT_CASE(ZeroAreaFacesProduceNoNaN)
 // Every vertex at the same point: all faces degenerate; nothing moves.
 BAD_INPUT_CASE(FullyCollapsedMeshStaysAsItIs)
 {
-  Mesh m = denoising_test::plane_grid<Mesh>(3);
+  Mesh m = denoising_support::plane_grid<Mesh>(3);
   for(auto v : m.vertices())
     m.point(v) = K::Point_3(1, 1, 1);
   const auto before = positions(m);
@@ -485,7 +485,7 @@ BAD_INPUT_CASE(FullyCollapsedMeshStaysAsItIs)
 // Needles: a column of the grid squeezed to width 1e-9 (aspect ratio 1e8).
 BAD_INPUT_CASE(NeedleFacesProduceNoNaN)
 {
-  Mesh m = denoising_test::plane_grid<Mesh>(10);
+  Mesh m = denoising_support::plane_grid<Mesh>(10);
   for(auto v : m.vertices())
   {
     const K::Point_3& p = m.point(v);
@@ -517,7 +517,7 @@ BAD_INPUT_CASE(SingleTriangleDoesNotMove)
 // border vertices stay finite and the noise goes down.
 BAD_INPUT_CASE(BorderFacesAreDenoised)
 {
-  const Mesh flat = denoising_test::plane_grid<Mesh>(20);
+  const Mesh flat = denoising_support::plane_grid<Mesh>(20);
   Mesh m = noisy_plane(20, 11);
   const double noisy_En = PMP::face_normal_error(m, flat);
   REQUIRE(invalid_argument_of([&] { PMP::intrinsic_denoising(m); }) == "<no exception>");
@@ -568,7 +568,7 @@ BAD_INPUT_CASE(ConstrainedBorderVerticesNeverMove)
 BAD_INPUT_CASE(TinyAndHugeScalesGiveTheScaledResult)
 {
   const Mesh noisy = [] {
-    Mesh c = denoising_test::cube<Mesh>(6);
+    Mesh c = denoising_support::cube<Mesh>(6);
     PMP::add_gaussian_noise(c, 0.3, CGAL::parameters::random_seed(13));
     return c;
   }();
@@ -633,7 +633,7 @@ namespace {
 std::string read_off_text(const std::string& text, Mesh& m)
 {
   std::istringstream in(text);
-  return denoise_file::read_mesh(in, "off", text.size(), m);
+  return denoising_support::read_mesh(in, "off", text.size(), m);
 }
 
 } // namespace
@@ -688,7 +688,7 @@ std::string read_text(const std::string& text, const char* format, Mesh& m,
                       std::vector<std::string>* warnings = nullptr)
 {
   std::istringstream in(text);
-  return denoise_file::read_mesh(in, format, text.size(), m, warnings);
+  return denoising_support::read_mesh(in, format, text.size(), m, warnings);
 }
 
 // Each of `bad` in `format`: a one-line message, no mesh; returns "" or what
@@ -895,25 +895,25 @@ BAD_INPUT_CASE(OutputIsAtomicAndNeverOverwritesTheInput)
     out << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   }
   Mesh m;
-  REQUIRE(denoise_file::read_mesh_file(input, m).empty());
-  REQUIRE(denoise_file::output_path(input) == (dir / "in_denoised.off").string());
-  REQUIRE(denoise_file::output_path("a.b/c") == "a.b/c_denoised.off");
+  REQUIRE(denoising_support::read_mesh_file(input, m).empty());
+  REQUIRE(denoising_support::output_path(input) == (dir / "in_denoised.off").string());
+  REQUIRE(denoising_support::output_path("a.b/c") == "a.b/c_denoised.off");
   // refuses to write over the input
-  REQUIRE(contains(denoise_file::write_mesh_file(input, m, input), "refusing"));
+  REQUIRE(contains(denoising_support::write_mesh_file(input, m, input), "refusing"));
   // an unwritable place: an error, and no temporary file left
-  REQUIRE(!denoise_file::write_mesh_file((dir / "missing" / "x.off").string(), m).empty());
+  REQUIRE(!denoising_support::write_mesh_file((dir / "missing" / "x.off").string(), m).empty());
   // a normal write: the output holds the mesh, no temporary file is left
-  const std::string output = denoise_file::output_path(input);
-  REQUIRE(denoise_file::write_mesh_file(output, m, input).empty());
+  const std::string output = denoising_support::output_path(input);
+  REQUIRE(denoising_support::write_mesh_file(output, m, input).empty());
   Mesh back;
-  REQUIRE(denoise_file::read_mesh_file(output, back).empty());
+  REQUIRE(denoising_support::read_mesh_file(output, back).empty());
   REQUIRE(num_faces(back) == 1);
   std::size_t files = 0;
   for(const auto& entry : fs::directory_iterator(dir))
     files += entry.is_regular_file();
   fs::remove_all(dir);
   REQUIRE(files == 2);
-  REQUIRE(contains(denoise_file::read_mesh_file((dir / "nope.off").string(), back), "cannot open"));
+  REQUIRE(contains(denoising_support::read_mesh_file((dir / "nope.off").string(), back), "cannot open"));
   return "";
 }
 
@@ -957,7 +957,8 @@ TEST(MeshFile, ManifoldSoupTestAgreesWithCgal)
 {
   typedef std::vector<std::vector<std::size_t>> Polygons;
   auto agree = [](const Polygons& p, std::size_t nv, const std::string& what) {
-    const bool cgal = PMP::is_polygon_soup_a_polygon_mesh(p), ours = denoise_file::is_oriented_manifold_soup(p, nv);
+    const bool cgal = PMP::is_polygon_soup_a_polygon_mesh(p),
+               ours = denoising_support::is_oriented_manifold_soup(p, nv);
     EXPECT_EQ(ours, cgal) << what;
     return cgal;
   };
@@ -1029,13 +1030,13 @@ TEST(MeshFile, DirectBuildIsCgalsBuild)
   typedef std::vector<std::vector<std::size_t>> Polygons;
   std::size_t compared = 0;
   auto same = [&compared](const Polygons& polygons, std::size_t nv, const std::string& what) {
-    if(!denoise_file::is_oriented_manifold_soup(polygons, nv))
+    if(!denoising_support::is_oriented_manifold_soup(polygons, nv))
       return;
     std::vector<K::Point_3> points;
     for(std::size_t v = 0; v < nv; ++v)
       points.emplace_back(double(v), double(v * v % 7), 0.5 * double(v % 3));
     Mesh ours, cgal;
-    denoise_file::build_oriented_manifold_mesh(points, polygons, ours);
+    denoising_support::build_oriented_manifold_mesh(points, polygons, ours);
     PMP::polygon_soup_to_polygon_mesh(points, polygons, cgal);
     ASSERT_EQ(ours.num_vertices(), cgal.num_vertices()) << what;
     ASSERT_EQ(ours.num_halfedges(), cgal.num_halfedges()) << what;
@@ -1103,7 +1104,7 @@ TEST(MeshFile, OffNumberScannerAgreesWithTheStream)
     std::string line;
     for(int k = 0; k < 1 + trial % 7; ++k)
       line += std::string(k ? " " : "") + words[random() % (sizeof(words) / sizeof(words[0]))];
-    denoise_file::off_text::numbers(line, fast);
+    denoising_support::off_text::numbers(line, fast);
     std::vector<double> stream;
     std::istringstream in(line);
     double d;
@@ -1136,10 +1137,10 @@ TEST(MeshFile, OffWriterRoundTripsBitForBit)
   m.add_face(v[4], v[6], v[7]);
   m.remove_vertex(unused); // a hole in the vertex numbering
   std::ostringstream out;
-  ASSERT_TRUE(denoise_file::write_off_text(out, m));
+  ASSERT_TRUE(denoising_support::write_off_text(out, m));
   std::istringstream in(out.str());
   Mesh back;
-  ASSERT_EQ(denoise_file::read_mesh(in, "off", out.str().size(), back), "");
+  ASSERT_EQ(denoising_support::read_mesh(in, "off", out.str().size(), back), "");
   ASSERT_EQ(num_vertices(back), 8u);
   ASSERT_EQ(num_faces(back), 4u);
   std::vector<K::Point_3> a, b;

@@ -26,7 +26,7 @@ TEST(BilateralMeshDenoising, NoisyPlaneBecomesFlat)
 // the rounding spreads: measured E_n 15.75 deg, E_v 6.05e-2.
 TEST(BilateralMeshDenoising, NoiseFreeCubeKeepsItsEdgesWithASmallSigmaS)
 {
-  Mesh cube = denoising_test::cube<Mesh>(12);
+  Mesh cube = denoising_support::cube<Mesh>(12);
   const auto before = positions(cube);
   const Errors e = noise_free_cube(
       "FDC03 (sigma_s 0.1 l)", [](Mesh& m) { PMP::bilateral_mesh_denoising(m, CGAL::parameters::sigma_range(0.1)); });
@@ -57,7 +57,7 @@ TEST(BilateralMeshDenoising, NoiseFreeCubeWithAdaptiveSigmaSMeasured)
 
 TEST(BilateralMeshDenoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
 {
-  Mesh m = denoising_test::cube<Mesh>(3);
+  Mesh m = denoising_support::cube<Mesh>(3);
   const auto before = positions(m);
   EXPECT_THROW(PMP::bilateral_mesh_denoising(m, CGAL::parameters::sigma_spatial(0.)), std::invalid_argument);
   EXPECT_EQ(max_distance(before, positions(m)), 0.);

@@ -37,7 +37,7 @@ TEST(BilateralNormalDenoising, GeometricNeighborhoodOption)
 
 TEST(BilateralNormalDenoising, BadSigmaThrowsAndLeavesTheMeshUnchanged)
 {
-  Mesh m = denoising_test::cube<Mesh>(3);
+  Mesh m = denoising_support::cube<Mesh>(3);
   const auto before = positions(m);
   EXPECT_THROW(PMP::bilateral_normal_denoising(m, CGAL::parameters::sigma_range(0.)), std::invalid_argument);
   EXPECT_THROW(PMP::bilateral_normal_denoising(m, CGAL::parameters::sigma_spatial(-1.)), std::invalid_argument);
@@ -48,7 +48,7 @@ TEST(BilateralNormalDenoising, BadSigmaThrowsAndLeavesTheMeshUnchanged)
 
 TEST(BilateralNormalDenoising, FaceNormalMapReceivesUnitFilteredNormals)
 {
-  Mesh mesh = denoising_test::cube<Mesh>(6);
+  Mesh mesh = denoising_support::cube<Mesh>(6);
   PMP::add_gaussian_noise(mesh, 0.2, CGAL::parameters::random_seed(4));
   auto fnm = mesh.add_property_map<Mesh::Face_index, K::Vector_3>("f:filtered", CGAL::NULL_VECTOR).first;
   PMP::bilateral_normal_denoising(mesh, CGAL::parameters::face_normal_map(fnm));

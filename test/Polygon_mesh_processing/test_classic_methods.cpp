@@ -88,7 +88,7 @@ TYPED_TEST_SUITE(NormalFilteringMethod, Normal_filtering_methods);
 
 TYPED_TEST(NormalFilteringMethod, RelaxesAlongTheSurfaceOnlyWhenAsked)
 {
-  const Mesh reference = denoising_test::graded_octahedron<Mesh>(20, 1.4);
+  const Mesh reference = denoising_support::graded_octahedron<Mesh>(20, 1.4);
   Mesh noisy = reference;
   PMP::add_depth_scan_noise(noisy, 0.3, CGAL::parameters::random_seed(3));
   auto pinned = noisy.add_property_map<Mesh::Vertex_index, bool>("v:pinned", false).first;

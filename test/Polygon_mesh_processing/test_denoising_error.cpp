@@ -19,14 +19,14 @@ typedef CGAL::Polyhedron_3<K> Polyhedron;
 
 TEST(DenoisingError, IdenticalMeshesHaveZeroError)
 {
-  const Mesh a = denoising_test::cube<Mesh>(4);
+  const Mesh a = denoising_support::cube<Mesh>(4);
   EXPECT_EQ(PMP::face_normal_error(a, a), 0.);
   EXPECT_EQ(PMP::vertex_position_error(a, a), 0.);
 }
 
 TEST(DenoisingError, TiltedPlaneGivesItsAngle)
 {
-  const Mesh flat = denoising_test::plane_grid<Mesh>(10);
+  const Mesh flat = denoising_support::plane_grid<Mesh>(10);
   Mesh tilted = flat;
   const double slope = 0.25;
   for(auto v : vertices(tilted))
@@ -37,7 +37,7 @@ TEST(DenoisingError, TiltedPlaneGivesItsAngle)
   const double expected = std::atan(slope) * 180. / 3.14159265358979323846;
   EXPECT_NEAR(PMP::face_normal_error(tilted, flat), expected, 1e-10);
   // mixed mesh types
-  const Polyhedron flat_poly = denoising_test::plane_grid<Polyhedron>(10);
+  const Polyhedron flat_poly = denoising_support::plane_grid<Polyhedron>(10);
   EXPECT_NEAR(PMP::face_normal_error(tilted, flat_poly), expected, 1e-10);
 }
 
@@ -45,8 +45,8 @@ TEST(DenoisingError, TranslatedPlaneGivesItsOffset)
 {
   // every vertex at distance h from the (larger) reference plane: E_v = h,
   // since the vertex areas add up to 3 A(M')
-  const Mesh reference = denoising_test::plane_grid<Mesh>(10, 2.);
-  Mesh lifted = denoising_test::plane_grid<Mesh>(10, 1.);
+  const Mesh reference = denoising_support::plane_grid<Mesh>(10, 2.);
+  Mesh lifted = denoising_support::plane_grid<Mesh>(10, 1.);
   const double h = 0.0125;
   for(auto v : vertices(lifted))
   {
@@ -60,7 +60,7 @@ TEST(DenoisingError, AreaWeightsOfEquation11)
 {
   // two triangles of the reference plane z = 0, one vertex of the evaluated
   // copy lifted by h: only that vertex contributes, weighted by its ring area.
-  const Mesh reference = denoising_test::plane_grid<Mesh>(1);
+  const Mesh reference = denoising_support::plane_grid<Mesh>(1);
   Mesh m = reference;
   // lift the vertex (1, 1): it belongs to one of the two triangles (area 1/2)
   const double h = 0.1;
@@ -84,7 +84,7 @@ TEST(DenoisingError, AreaWeightsOfEquation11)
 
 TEST(DenoisingError, MismatchedMeshesThrow)
 {
-  const Mesh a = denoising_test::cube<Mesh>(3), b = denoising_test::cube<Mesh>(4);
+  const Mesh a = denoising_support::cube<Mesh>(3), b = denoising_support::cube<Mesh>(4);
   EXPECT_THROW(PMP::face_normal_error(a, b), std::invalid_argument);
   const Mesh empty;
   EXPECT_THROW(PMP::vertex_position_error(a, empty), std::invalid_argument);

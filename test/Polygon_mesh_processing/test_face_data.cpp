@@ -48,7 +48,7 @@ TEST(FaceData, MeansAreTheSameWithEveryConcurrencyTag)
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
   CGAL::Polygon_mesh_processing::add_gaussian_noise(fandisk, 0.3, CGAL::parameters::random_seed(3));
   const Flat_setup<> noisy(fandisk);
-  Flat_setup<> fins(denoising_test::plane_grid<Mesh>(48)); // 4608 faces
+  Flat_setup<> fins(denoising_support::plane_grid<Mesh>(48)); // 4608 faces
   {
     D::Flat_mesh& m = fins.m;
     add_fins(m);
@@ -74,7 +74,7 @@ TEST(FaceData, MeansAreTheSameWithEveryConcurrencyTag)
 // edge once, bitwise as a sum over the distinct edges in order of first use.
 TEST(FlatMesh, EdgeWalksSeeEveryFaceOnAnEdgeOnce)
 {
-  Flat_setup<> grid(denoising_test::plane_grid<Mesh>(6));
+  Flat_setup<> grid(denoising_support::plane_grid<Mesh>(6));
   D::Flat_mesh& m = grid.m;
   const std::array<std::uint32_t, 3> t = m.triangles[0];
   add_fins(m);

@@ -34,7 +34,7 @@ TEST(FastFeaturePreservingDenoising, EdgeNeighborhoodAlsoSmooths)
 
 TEST(FastFeaturePreservingDenoising, BadThresholdThrowsAndLeavesTheMeshUnchanged)
 {
-  Mesh m = denoising_test::cube<Mesh>(3);
+  Mesh m = denoising_support::cube<Mesh>(3);
   const auto before = positions(m);
   EXPECT_THROW(PMP::fast_feature_preserving_denoising(m, CGAL::parameters::normal_threshold(1.)),
                std::invalid_argument);
@@ -48,7 +48,7 @@ TEST(FastFeaturePreservingDenoising, BadThresholdThrowsAndLeavesTheMeshUnchanged
 
 TEST(FastFeaturePreservingDenoising, FaceNormalMapReceivesUnitFilteredNormals)
 {
-  Mesh mesh = denoising_test::cube<Mesh>(6);
+  Mesh mesh = denoising_support::cube<Mesh>(6);
   PMP::add_gaussian_noise(mesh, 0.2, CGAL::parameters::random_seed(4));
   auto fnm = mesh.add_property_map<Mesh::Face_index, K::Vector_3>("f:filtered", CGAL::NULL_VECTOR).first;
   PMP::fast_feature_preserving_denoising(mesh, CGAL::parameters::face_normal_map(fnm));

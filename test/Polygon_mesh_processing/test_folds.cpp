@@ -6,7 +6,7 @@
 
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertices/vertex_update.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 #include <CGAL/Polygon_mesh_processing/update_vertices_from_face_normals.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -53,13 +53,14 @@ void check_no_flips(const Fold_case& c)
   Mesh guarded = noisy, unguarded = noisy;
   PMP::intrinsic_denoising(guarded);
   PMP::intrinsic_denoising(unguarded, CGAL::parameters::prevent_folds(false));
-  const std::size_t fg = denoising_test::turned_faces(noisy, guarded),
-                    fu = denoising_test::turned_faces(noisy, unguarded);
+  const std::size_t fg = denoising_support::turned_faces(noisy, guarded),
+                    fu = denoising_support::turned_faces(noisy, unguarded);
   std::printf("%s: flipped faces (against the noisy input) guarded %zu, unguarded %zu; against the clean mesh: "
               "noisy %zu, guarded %zu, unguarded %zu; E_n guarded %.3f deg, unguarded %.3f deg\n",
-              c.name, fg, fu, denoising_test::turned_faces(reference, noisy),
-              denoising_test::turned_faces(reference, guarded), denoising_test::turned_faces(reference, unguarded),
-              PMP::face_normal_error(guarded, reference), PMP::face_normal_error(unguarded, reference));
+              c.name, fg, fu, denoising_support::turned_faces(reference, noisy),
+              denoising_support::turned_faces(reference, guarded),
+              denoising_support::turned_faces(reference, unguarded), PMP::face_normal_error(guarded, reference),
+              PMP::face_normal_error(unguarded, reference));
   EXPECT_EQ(fg, 0u);
 }
 
@@ -96,8 +97,8 @@ TEST(FoldSafeguard, NoFlippedFacesWithTheLeastSquaresUpdate)
   std::printf("least squares, fandisk sigma_E 0.5: E_n fixed %.3f, automatic %.3f (noisy %.3f)\n",
               PMP::face_normal_error(fixed, reference), PMP::face_normal_error(automatic, reference),
               PMP::face_normal_error(noisy, reference));
-  EXPECT_EQ(denoising_test::turned_faces(noisy, fixed), 0u);
-  EXPECT_EQ(denoising_test::turned_faces(noisy, automatic), 0u);
+  EXPECT_EQ(denoising_support::turned_faces(noisy, fixed), 0u);
+  EXPECT_EQ(denoising_support::turned_faces(noisy, automatic), 0u);
   EXPECT_LT(PMP::face_normal_error(fixed, reference), PMP::face_normal_error(noisy, reference));
 }
 

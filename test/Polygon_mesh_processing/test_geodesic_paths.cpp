@@ -1,4 +1,4 @@
-// Tests of the exact geodesic paths (internal/Denoising/geodesic_paths.h) and
+// Tests of the exact geodesic paths (internal/Denoising/paths/geodesic_paths.h) and
 // of intrinsic_denoising() with Intrinsic_path_strategy::GEODESIC.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -26,8 +26,8 @@ namespace D = PMP::internal::Denoising;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef CGAL::Polyhedron_3<K> Polyhedron;
-using denoising_test::P3;
-using denoising_test::Soup;
+using denoising_support::P3;
+using denoising_support::Soup_builder;
 
 namespace {
 
@@ -58,7 +58,7 @@ struct Flat
 };
 
 // Flat mesh straight from a soup (no CGAL mesh in between).
-D::Flat_mesh flat_from_soup(const Soup& s)
+D::Flat_mesh flat_from_soup(const Soup_builder& s)
 {
   D::Flat_mesh m;
   for(const P3& p : s.points)
@@ -176,7 +176,7 @@ struct Planar_grid
 
   Planar_grid(int n, double jitter)
   {
-    Soup s;
+    Soup_builder s;
     auto at = [&](int i, int j) -> P3 {
       double x = double(i) / n, y = double(j) / n;
       if(i > 0 && j > 0 && i < n && j < n)
@@ -258,7 +258,7 @@ TEST(GeodesicPaths, FoldedStripCrossesTheFoldWhereTheUnfoldedLineDoes)
       return {x, y, 0.};
     return {1. + (x - 1.) * std::cos(a), y, (x - 1.) * std::sin(a)};
   };
-  Soup s;
+  Soup_builder s;
   std::vector<std::array<double, 2>> layout;
   for(int i = 0; i < nu; ++i)
     for(int j = 0; j < nv; ++j)
@@ -330,7 +330,7 @@ TEST(GeodesicPaths, FoldedStripCrossesTheFoldWhereTheUnfoldedLineDoes)
 
 TEST(GeodesicPaths, ForestIsAPrefixTreeOfTheGeodesicPaths)
 {
-  Mesh mesh = denoising_test::graded_octahedron<Mesh>(10);
+  Mesh mesh = denoising_support::graded_octahedron<Mesh>(10);
   PMP::add_gaussian_noise(mesh, 0.3, CGAL::parameters::random_seed(4));
   Flat f(mesh);
   const D::Csr nb = f.neighbors(4.);
@@ -367,7 +367,7 @@ TEST(GeodesicPaths, ForestIsAPrefixTreeOfTheGeodesicPaths)
 
 TEST(GeodesicPaths, PhaseTimingLeavesTheForestAsItIs)
 {
-  Mesh mesh = denoising_test::graded_octahedron<Mesh>(8);
+  Mesh mesh = denoising_support::graded_octahedron<Mesh>(8);
   PMP::add_gaussian_noise(mesh, 0.3, CGAL::parameters::random_seed(5));
   Flat f(mesh);
   const D::Csr nb = f.neighbors(4.);
@@ -436,7 +436,7 @@ TEST(GeodesicPaths, StepLengthsSumToTheGeodesicLength)
 TEST(GeodesicPaths, UnreachableNeighbourFallsBackToTheDirectPath)
 {
   // two separate grids: face 0's neighbourhood (given by hand) holds faces of both
-  Soup s;
+  Soup_builder s;
   s.add_subdivided_quad({0., 0., 0.}, {1., 0., 0.}, {0., 1., 0.}, 2, 2, false);
   const std::uint32_t first_other = std::uint32_t(s.triangles.size());
   s.add_subdivided_quad({3., 0., 0.}, {1., 0., 0.}, {0., 1., 0.}, 2, 2, false);
@@ -472,7 +472,7 @@ TEST(GeodesicPaths, GeodesicsBendAroundTheReflexCornerOfAnLShapedPatch)
   // if it stays in the L, else the two segments through the reflex corner
   // (1, 1): the border vertex there must stay a pseudo-source, while the
   // convex corners (angle pi / 2) are not (see Geodesic_patch_mesh).
-  Soup s;
+  Soup_builder s;
   const int n = 4;
   for(const auto& o : {P3{0., 0., 0.}, P3{1., 0., 0.}, P3{0., 1., 0.}})
     s.add_subdivided_quad(o, {1., 0., 0.}, {0., 1., 0.}, n, n, false);
@@ -578,7 +578,7 @@ TEST(GeodesicPaths, PrismWithNonMatchingCapSubdivisionFallsBackExactlyAcrossItsC
   // benchmark's prism, hexagonal_prism(12, 40, 18).
   for(int n_cap : {8, 6})
   {
-    Mesh mesh = denoising_test::hexagonal_prism<Mesh>(8, 12, n_cap);
+    Mesh mesh = denoising_support::hexagonal_prism<Mesh>(8, 12, n_cap);
     PMP::add_gaussian_noise(mesh, 0.1, CGAL::parameters::random_seed(1));
     Flat f(mesh);
     std::size_t ncomp = 0;
@@ -620,7 +620,7 @@ TEST(GeodesicPaths, ZeroAreaFaceIsLeftOutOfThePatchesAndGetsDirectPaths)
 {
   // a plane grid whose edge (a, b) is split by its midpoint m on one side,
   // closed by the zero-area face (a, b, m)
-  Soup s;
+  Soup_builder s;
   const int n = 6;
   const P3 up = {0., 0., 1.};
   std::size_t cap = 0;
@@ -684,7 +684,7 @@ TEST(GeodesicPaths, ZeroAreaFaceIsLeftOutOfThePatchesAndGetsDirectPaths)
 
 TEST(GeodesicDenoising, NoiseFreeCubeKeepsItsEdges)
 {
-  Mesh cube = denoising_test::cube<Mesh>(12);
+  Mesh cube = denoising_support::cube<Mesh>(12);
   const Mesh reference = cube;
   PMP::intrinsic_denoising(cube, CGAL::parameters::path_strategy(PMP::Intrinsic_path_strategy::GEODESIC));
   const double En = PMP::face_normal_error(cube, reference), Ev = PMP::vertex_position_error(cube, reference);
@@ -697,7 +697,7 @@ TEST(GeodesicDenoising, NoiseFreeCubeKeepsItsEdges)
 
 TEST(GeodesicDenoising, NoisyPrismIsDenoisedAndDiffersFromSquarePattern)
 {
-  Mesh reference = denoising_test::hexagonal_prism<Mesh>(8, 16, 8);
+  Mesh reference = denoising_support::hexagonal_prism<Mesh>(8, 16, 8);
   Mesh noisy = reference;
   PMP::add_gaussian_noise(noisy, 0.1, CGAL::parameters::random_seed(1));
   Mesh geodesic = noisy, square = noisy;
@@ -712,7 +712,7 @@ TEST(GeodesicDenoising, NoisyPrismIsDenoisedAndDiffersFromSquarePattern)
 
 TEST(GeodesicDenoising, StepLengthOptionChangesTheFilter)
 {
-  Mesh mesh = denoising_test::graded_octahedron<Mesh>(8);
+  Mesh mesh = denoising_support::graded_octahedron<Mesh>(8);
   PMP::add_gaussian_noise(mesh, 0.3, CGAL::parameters::random_seed(6));
   auto a = mesh.add_property_map<Mesh::Face_index, K::Vector_3>("f:a").first;
   auto b = mesh.add_property_map<Mesh::Face_index, K::Vector_3>("f:b").first;
@@ -727,8 +727,8 @@ TEST(GeodesicDenoising, StepLengthOptionChangesTheFilter)
 
 TEST(GeodesicDenoising, SurfaceMeshAndPolyhedronAgree)
 {
-  Mesh sm = denoising_test::hexagonal_prism<Mesh>(8, 12, 6);
-  Polyhedron poly = denoising_test::hexagonal_prism<Polyhedron>(8, 12, 6);
+  Mesh sm = denoising_support::hexagonal_prism<Mesh>(8, 12, 6);
+  Polyhedron poly = denoising_support::hexagonal_prism<Polyhedron>(8, 12, 6);
   PMP::add_gaussian_noise(sm, 0.2, CGAL::parameters::random_seed(3));
   PMP::add_gaussian_noise(poly, 0.2, CGAL::parameters::random_seed(3));
   const auto np = CGAL::parameters::path_strategy(PMP::Intrinsic_path_strategy::GEODESIC).number_of_iterations(5);
@@ -759,7 +759,7 @@ TEST(GeodesicDenoising, SurfaceMeshAndPolyhedronAgree)
 #ifdef CGAL_LINKED_WITH_TBB
 TEST(GeodesicPaths, ParallelEqualsSequential)
 {
-  Mesh mesh = denoising_test::graded_octahedron<Mesh>(12);
+  Mesh mesh = denoising_support::graded_octahedron<Mesh>(12);
   PMP::add_gaussian_noise(mesh, 0.3, CGAL::parameters::random_seed(8));
   Flat f(mesh);
   const D::Csr nb = f.neighbors(4.);

@@ -58,7 +58,7 @@ D::Face_data face_data(const Mesh& m)
 // of E_n.
 TEST(GuidedNormalDenoising, NoiseFreeCubeKeepsItsEdges)
 {
-  Mesh cube = denoising_test::cube<Mesh>(12);
+  Mesh cube = denoising_support::cube<Mesh>(12);
   const D::Face_data before = face_data(cube);
   const Errors e = noise_free_cube("ZDZ15", [](Mesh& m) { PMP::guided_normal_denoising(m); });
   PMP::guided_normal_denoising(cube);
@@ -84,7 +84,7 @@ TEST(GuidedNormalDenoising, NoiseFreeCubeKeepsItsEdges)
 // one that does not.
 TEST(GuidedNormalDenoising, GuidanceOfACubeIsTheFaceNormalAwayFromCorners)
 {
-  Mesh m = denoising_test::cube<Mesh>(12);
+  Mesh m = denoising_support::cube<Mesh>(12);
   const D::Flat_mesh flat = flat_mesh(m);
   const D::Face_data fd = face_data(m);
   std::vector<D::Vec3> guidance, mean;
@@ -108,7 +108,7 @@ TEST(GuidedNormalDenoising, GuidanceOfACubeIsTheFaceNormalAwayFromCorners)
 
 TEST(GuidedNormalDenoising, BadRadiusThrowsAndLeavesTheMeshUnchanged)
 {
-  Mesh m = denoising_test::cube<Mesh>(3);
+  Mesh m = denoising_support::cube<Mesh>(3);
   const auto before = positions(m);
   EXPECT_THROW(PMP::guided_normal_denoising(m, CGAL::parameters::neighbor_radius(-1.)), std::invalid_argument);
   EXPECT_THROW(PMP::guided_normal_denoising(m, CGAL::parameters::sigma_range(0.)), std::invalid_argument);
@@ -119,7 +119,7 @@ TEST(GuidedNormalDenoising, BadRadiusThrowsAndLeavesTheMeshUnchanged)
 // guidance is ambiguous, see above; measured: 6 faces of 432), close to an axis.
 TEST(GuidedNormalDenoising, FaceNormalMapReceivesUnitFilteredNormals)
 {
-  Mesh mesh = denoising_test::cube<Mesh>(6);
+  Mesh mesh = denoising_support::cube<Mesh>(6);
   PMP::add_gaussian_noise(mesh, 0.2, CGAL::parameters::random_seed(4));
   auto fnm = mesh.add_property_map<Mesh::Face_index, K::Vector_3>("f:filtered", CGAL::NULL_VECTOR).first;
   PMP::guided_normal_denoising(mesh, CGAL::parameters::face_normal_map(fnm));

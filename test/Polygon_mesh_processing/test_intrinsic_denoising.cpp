@@ -133,7 +133,7 @@ TEST(IntrinsicWeights, HandComputedPathOfThreeFaces)
 
 TEST(IntrinsicDenoising, NoisyPlaneBecomesFlat)
 {
-  Mesh plane = denoising_test::plane_grid<Mesh>(30);
+  Mesh plane = denoising_support::plane_grid<Mesh>(30);
   const Mesh reference = plane;
   PMP::add_gaussian_noise(plane, 0.3, CGAL::parameters::random_seed(7));
   auto max_height = [](const Mesh& m) {
@@ -163,7 +163,7 @@ TEST(IntrinsicDenoising, NoisyPlaneBecomesFlat)
 
 TEST(IntrinsicDenoising, NoiseFreeCubeKeepsItsEdges)
 {
-  Mesh cube = denoising_test::cube<Mesh>(12);
+  Mesh cube = denoising_support::cube<Mesh>(12);
   const Mesh reference = cube;
   PMP::intrinsic_denoising(cube);
   std::printf("noise-free cube: E_n %.3e deg, E_v %.3e\n", PMP::face_normal_error(cube, reference),
@@ -242,7 +242,7 @@ TEST(IntrinsicDenoising, ParallelEqualsSequential)
 
 TEST(IntrinsicDenoising, ConstrainedVerticesDoNotMove)
 {
-  Mesh mesh = denoising_test::plane_grid<Mesh>(12);
+  Mesh mesh = denoising_support::plane_grid<Mesh>(12);
   PMP::add_gaussian_noise(mesh, 0.3, CGAL::parameters::random_seed(2));
   auto pinned = mesh.add_property_map<Mesh::Vertex_index, bool>("v:pinned", false).first;
   std::vector<Mesh::Vertex_index> chosen;
@@ -264,7 +264,7 @@ TEST(IntrinsicDenoising, ConstrainedVerticesDoNotMove)
 
 TEST(IntrinsicDenoising, FaceNormalMapReceivesUnitFilteredNormals)
 {
-  Mesh mesh = denoising_test::cube<Mesh>(6);
+  Mesh mesh = denoising_support::cube<Mesh>(6);
   PMP::add_gaussian_noise(mesh, 0.2, CGAL::parameters::random_seed(4));
   auto fnm = mesh.add_property_map<Mesh::Face_index, K::Vector_3>("f:filtered", CGAL::NULL_VECTOR).first;
   PMP::intrinsic_denoising(mesh, CGAL::parameters::face_normal_map(fnm).number_of_iterations(10));
@@ -284,7 +284,7 @@ TEST(IntrinsicDenoising, ZeroIterationsWithAFaceNormalMapKeepsTheMeshAndItsNorma
 {
   for(bool automatic : {true, false})
   {
-    Mesh mesh = denoising_test::cube<Mesh>(6);
+    Mesh mesh = denoising_support::cube<Mesh>(6);
     PMP::add_gaussian_noise(mesh, 0.2, CGAL::parameters::random_seed(4));
     const auto before = positions(mesh);
     auto fnm = mesh.add_property_map<Mesh::Face_index, K::Vector_3>("f:filtered", CGAL::NULL_VECTOR).first;
@@ -299,7 +299,7 @@ TEST(IntrinsicDenoising, ZeroIterationsWithAFaceNormalMapKeepsTheMeshAndItsNorma
 
 TEST(IntrinsicFilterFaceNormals, OnePassOnACubeKeepsAxisNormalsAndTheMesh)
 {
-  Mesh mesh = denoising_test::cube<Mesh>(5);
+  Mesh mesh = denoising_support::cube<Mesh>(5);
   const auto before = positions(mesh);
   auto fnm = mesh.add_property_map<Mesh::Face_index, K::Vector_3>("f:filtered", CGAL::NULL_VECTOR).first;
   PMP::intrinsic_filter_face_normals(mesh, fnm);
@@ -355,7 +355,7 @@ TEST(IntrinsicDenoisingInput, EmptyMeshIsANoOp)
 
 TEST(IntrinsicDenoisingInput, ZeroAreaFacesProduceNoNaN)
 {
-  Mesh mesh = denoising_test::plane_grid<Mesh>(10);
+  Mesh mesh = denoising_support::plane_grid<Mesh>(10);
   PMP::add_gaussian_noise(mesh, 0.2, CGAL::parameters::random_seed(9));
   // collapse a few faces to zero area: move a vertex onto the midpoint of the opposite edge
   int collapsed = 0;
@@ -375,7 +375,7 @@ TEST(IntrinsicDenoisingInput, ZeroAreaFacesProduceNoNaN)
 
 TEST(IntrinsicDenoisingInput, NonFiniteCoordinateThrowsAndIsUnchanged)
 {
-  Mesh mesh = denoising_test::plane_grid<Mesh>(4);
+  Mesh mesh = denoising_support::plane_grid<Mesh>(4);
   mesh.point(*vertices(mesh).begin()) = K::Point_3(std::nan(""), 0, 0);
   const auto before = positions(mesh);
   EXPECT_THROW(PMP::intrinsic_denoising(mesh), std::invalid_argument);
@@ -386,7 +386,7 @@ TEST(IntrinsicDenoisingInput, NonFiniteCoordinateThrowsAndIsUnchanged)
 
 TEST(IntrinsicDenoisingInput, InvalidParametersThrow)
 {
-  Mesh mesh = denoising_test::plane_grid<Mesh>(4);
+  Mesh mesh = denoising_support::plane_grid<Mesh>(4);
   EXPECT_THROW(PMP::intrinsic_denoising(mesh, CGAL::parameters::sigma_range(0.)), std::invalid_argument);
   EXPECT_THROW(PMP::intrinsic_denoising(mesh, CGAL::parameters::sigma_spatial(-1.)), std::invalid_argument);
   EXPECT_THROW(PMP::intrinsic_denoising(mesh, CGAL::parameters::neighbor_radius(0.)), std::invalid_argument);
@@ -428,7 +428,7 @@ double rms_height(const Mesh& mesh)
 // brought back: the manual gives the figures.)
 TEST(IrregularMeshes, ScrambledSliverPatchComesBackFlat)
 {
-  const Mesh plane = denoising_test::sliver_plane_grid<Mesh>(20, 200, 0.05);
+  const Mesh plane = denoising_support::sliver_plane_grid<Mesh>(20, 200, 0.05);
   Mesh noisy = plane;
   PMP::add_gaussian_noise(noisy, 0.05, CGAL::parameters::random_seed(1));
   Mesh denoised = noisy;
@@ -439,7 +439,7 @@ TEST(IrregularMeshes, ScrambledSliverPatchComesBackFlat)
   EXPECT_GT(e_noisy, 20.);
   EXPECT_LT(e_denoised, 2.);
   EXPECT_LT(rms_height(denoised), rms_height(noisy) / 5.);
-  EXPECT_EQ(denoising_test::turned_faces(noisy, denoised), 0u);
+  EXPECT_EQ(denoising_support::turned_faces(noisy, denoised), 0u);
 #ifdef CGAL_LINKED_WITH_TBB
   Mesh sequential = noisy;
   PMP::intrinsic_denoising<CGAL::Sequential_tag>(sequential);
@@ -470,6 +470,6 @@ TEST(IrregularMeshes, NoiseFreeIrregularCadMeshesBarelyMove)
     std::printf("%s noise-free: E_n %.4f degrees from the input, largest move %.5f mean edges\n", name, e_n, moved);
     EXPECT_LT(e_n, 0.5) << name;
     EXPECT_LT(moved, 0.05) << name;
-    EXPECT_EQ(denoising_test::turned_faces(input, mesh), 0u) << name;
+    EXPECT_EQ(denoising_support::turned_faces(input, mesh), 0u) << name;
   }
 }

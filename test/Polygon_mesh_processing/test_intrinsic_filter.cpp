@@ -40,7 +40,7 @@ struct Jittered_grid
 
   Jittered_grid()
   {
-    mesh = denoising_test::plane_grid<Mesh>(8);
+    mesh = denoising_support::plane_grid<Mesh>(8);
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> jitter(-0.02, 0.02);
     for(V v : vertices(mesh))
@@ -204,7 +204,7 @@ TEST(IntrinsicFilterPresets, GeodesicAndPropagationGiveTheClassicWeights)
 
 TEST(IntrinsicFilter, ConstantSignalIsUnchanged)
 {
-  Mesh mesh = denoising_test::cube<Mesh>(4);
+  Mesh mesh = denoising_support::cube<Mesh>(4);
   PMP::add_gaussian_noise(mesh, 0.2, CGAL::parameters::random_seed(1));
   auto fs = mesh.add_property_map<Mesh::Face_index, std::array<double, 3>>("f:s", {0.25, -2., 7.}).first;
   auto fo = mesh.add_property_map<Mesh::Face_index, std::array<double, 3>>("f:o").first;
@@ -321,8 +321,8 @@ TEST(IntrinsicFilter, SquarePatternOnAVertexSignalIsRefused)
 TEST(IntrinsicFilter, PolyhedronAndSurfaceMeshAgree)
 {
   typedef CGAL::Polyhedron_3<K> Polyhedron;
-  Mesh sm = denoising_test::cube<Mesh>(4);
-  Polyhedron poly = denoising_test::cube<Polyhedron>(4);
+  Mesh sm = denoising_support::cube<Mesh>(4);
+  Polyhedron poly = denoising_support::cube<Polyhedron>(4);
   PMP::add_gaussian_noise(sm, 0.3, CGAL::parameters::random_seed(3));
   PMP::add_gaussian_noise(poly, 0.3, CGAL::parameters::random_seed(3));
   // filter the vertex heights (z) with the propagation preset

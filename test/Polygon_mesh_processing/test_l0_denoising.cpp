@@ -54,7 +54,7 @@ TEST(L0Denoising, EdgeOperatorVanishesOnCoplanarTriangles)
 
 TEST(L0Denoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
 {
-  Mesh m = denoising_test::cube<Mesh>(3);
+  Mesh m = denoising_support::cube<Mesh>(3);
   const auto before = positions(m);
   EXPECT_THROW(PMP::l0_denoising(m, CGAL::parameters::l0_weight(0.)), std::invalid_argument);
   EXPECT_EQ(max_distance(before, positions(m)), 0.);
@@ -81,7 +81,7 @@ struct Counting_solver : CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::E
 // the default solver, and its failure reported.
 TEST(L0Denoising, SparseLinearSolverIsTheOneUsed)
 {
-  Mesh reference = denoising_test::cube<Mesh>(6);
+  Mesh reference = denoising_support::cube<Mesh>(6);
   PMP::add_gaussian_noise(reference, 0.2, CGAL::parameters::random_seed(3));
   Mesh by_default = reference, given = reference;
   PMP::l0_denoising(by_default);

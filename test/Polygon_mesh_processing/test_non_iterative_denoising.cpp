@@ -19,7 +19,7 @@ using namespace classic_test;
 TEST(NonIterativeDenoising, VertexNeighborhoodsAreTheConnectedFacesWithinTheRadius)
 {
   // 8 x 33^2 faces: above the parallel grain of the search (2048 vertices)
-  Mesh mesh = denoising_test::graded_octahedron<Mesh>(33, 1.4);
+  Mesh mesh = denoising_support::graded_octahedron<Mesh>(33, 1.4);
   PMP::add_gaussian_noise(mesh, 0.3, CGAL::parameters::random_seed(3));
   const Flat_setup<> setup(mesh);
   const D::Flat_mesh& m = setup.m;
@@ -98,7 +98,7 @@ TEST(NonIterativeDenoising, NoiseFreeCubeWithDefaultsMeasured)
 
 TEST(NonIterativeDenoising, BadParameterThrowsAndLeavesTheMeshUnchanged)
 {
-  Mesh m = denoising_test::cube<Mesh>(3);
+  Mesh m = denoising_support::cube<Mesh>(3);
   const auto before = positions(m);
   EXPECT_THROW(PMP::non_iterative_denoising(m, CGAL::parameters::sigma_range(-1.)), std::invalid_argument);
   EXPECT_EQ(max_distance(before, positions(m)), 0.);

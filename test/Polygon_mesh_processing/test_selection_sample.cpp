@@ -9,9 +9,9 @@
 
 #include <CGAL/Polygon_mesh_processing/add_noise.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/selection_sample.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/automatic_selection.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/selection_sample.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh/mesh_access.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>

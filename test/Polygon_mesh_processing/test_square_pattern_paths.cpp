@@ -205,7 +205,7 @@ TEST(SquarePattern, TreesAreRegionsSortedByDistanceThenInputIndex)
   expect_sorted_regions(fandisk, 14., far);
   EXPECT_GT(far.largest, D::square_pattern_counting_max); // the comparison sort ran too
   // the tie-break, in both sorts
-  const Mesh cube = denoising_test::cube<Mesh>(12);
+  const Mesh cube = denoising_support::cube<Mesh>(12);
   expect_sorted_regions(cube, 4., cube_near);
   EXPECT_LE(cube_near.largest, D::square_pattern_counting_max);
   EXPECT_GT(cube_near.ties, 0u);
@@ -336,7 +336,7 @@ TEST(SquarePattern, RenumberedFacesGiveTheSameTreesAndNormals)
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(CGAL::data_file_path("meshes/fandisk.off"), fandisk));
   CGAL::Polygon_mesh_processing::add_gaussian_noise(fandisk, 0.3, CGAL::parameters::random_seed(3));
   expect_renumbering_changes_nothing<CGAL::Sequential_tag>(fandisk);
-  expect_renumbering_changes_nothing<CGAL::Sequential_tag>(denoising_test::cube<Mesh>(12));
+  expect_renumbering_changes_nothing<CGAL::Sequential_tag>(denoising_support::cube<Mesh>(12));
 #ifdef CGAL_LINKED_WITH_TBB
   expect_renumbering_changes_nothing<CGAL::Parallel_tag>(fandisk);
 #endif
@@ -521,8 +521,8 @@ TEST(SquarePattern, NeighbourhoodsAreCappedWhereFacesAreFarSmallerThanAverage)
     largest = std::max<std::size_t>(largest, single_nb.end(f) - single_nb.begin(f));
   EXPECT_LT(8 * largest, single_cap); // far from the cap
 
-  const Mesh grid = denoising_test::plane_grid<Mesh>(50);
-  const Mesh both = denoising_test::with_scaled_copy(grid, 0.001, 5.);
+  const Mesh grid = denoising_support::plane_grid<Mesh>(50);
+  const Mesh both = denoising_support::with_scaled_copy(grid, 0.001, 5.);
   ASSERT_EQ(num_faces(both), 2 * num_faces(grid));
   const Flat_setup<> setup(both);
   const std::size_t nf = num_faces(grid);
@@ -597,7 +597,7 @@ static void expect_fan_search_is_the_plain_search(const D::Flat_mesh& m, const D
 
 TEST(SquarePattern, FanSearchGivesTheListsOfThePlainSearch)
 {
-  const Mesh cylinder = denoising_test::fan_cylinder<Mesh>(240);
+  const Mesh cylinder = denoising_support::fan_cylinder<Mesh>(240);
   ASSERT_EQ(num_faces(cylinder), 960u);
   Mesh noisy = cylinder;
   CGAL::Polygon_mesh_processing::add_gaussian_noise(noisy, 0.2, CGAL::parameters::random_seed(3));

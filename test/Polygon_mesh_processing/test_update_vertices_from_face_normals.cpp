@@ -8,7 +8,7 @@
 #include <CGAL/Polygon_mesh_processing/bilateral_normal_denoising.h>
 #include <CGAL/Polygon_mesh_processing/fast_feature_preserving_denoising.h>
 #include <CGAL/Polygon_mesh_processing/guided_normal_denoising.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/tangential_relaxation.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertices/tangential_relaxation.h>
 #include <CGAL/Polygon_mesh_processing/update_vertices_from_face_normals.h>
 
 #include <denoising_support/synthetic_meshes.h>
@@ -58,7 +58,7 @@ TEST(UpdateVertices, OneStepOnOneTriangleMatchesEquation10)
 template <typename M>
 double lift_and_restore()
 {
-  M mesh = denoising_test::plane_grid<M>(8);
+  M mesh = denoising_support::plane_grid<M>(8);
   // lift one interior vertex; the target normals are those of the flat plane
   typename boost::graph_traits<M>::vertex_descriptor lifted;
   for(auto v : vertices(mesh))
@@ -96,7 +96,7 @@ TEST(UpdateVertices, LiftedVertexIsFlattenedOnBothMeshTypes)
 
 TEST(UpdateVertices, ConstrainedVertexStays)
 {
-  Mesh mesh = denoising_test::plane_grid<Mesh>(4);
+  Mesh mesh = denoising_support::plane_grid<Mesh>(4);
   auto v0 = *vertices(mesh).begin();
   mesh.point(v0) = K::Point_3(mesh.point(v0).x(), mesh.point(v0).y(), 0.3);
   auto pinned = mesh.add_property_map<Mesh::Vertex_index, bool>("v:pinned", false).first;
@@ -108,7 +108,7 @@ TEST(UpdateVertices, ConstrainedVertexStays)
 
 TEST(UpdateVertices, NonFiniteNormalThrowsAndMeshIsUnchanged)
 {
-  Mesh mesh = denoising_test::plane_grid<Mesh>(3);
+  Mesh mesh = denoising_support::plane_grid<Mesh>(3);
   auto fnm = mesh.add_property_map<Mesh::Face_index, K::Vector_3>("f:n", K::Vector_3(0, 0, 1)).first;
   put(fnm, *faces(mesh).begin(), K::Vector_3(std::nan(""), 0, 1));
   const Mesh before = mesh;
@@ -201,7 +201,7 @@ TEST(UpdateVerticesLeastSquares, StepSolvesItsNormalEquations)
   //   sum_{f around v} n_f (n_f . (3 x_v - x_a - x_b - x_c)) + alpha |F_v| (x_v - p_v),
   // computed here from the mesh (a, b, c the corners of f). A wrong matrix,
   // right-hand side or solver fails this.
-  const Mesh clean = denoising_test::graded_octahedron<Mesh>(6);
+  const Mesh clean = denoising_support::graded_octahedron<Mesh>(6);
   const Mesh noisy = noisy_copy(clean, 0.3);
   auto target = clean_normals(clean);
   Mesh mesh = noisy;
@@ -237,7 +237,7 @@ TEST(UpdateVerticesLeastSquares, RecoversFromTrueNormalsFasterThanEquation10)
   // With the noise-free normals as targets, one global step removes most of
   // the normal error, one step of eq. 10 much less. Measured: noisy 6.5,
   // eq. 10 2.1, least squares 0.33 degrees.
-  const Mesh clean = denoising_test::cube<Mesh>(12);
+  const Mesh clean = denoising_support::cube<Mesh>(12);
   const Mesh noisy = noisy_copy(clean, 0.3);
   auto target = clean_normals(clean);
   Mesh paper = noisy, global = noisy;
@@ -259,7 +259,7 @@ namespace {
 // height spread of the result, and whether the pinned vertex stayed.
 std::pair<double, bool> flatten_lifted_grid(PMP::Vertex_update update, unsigned int steps)
 {
-  Mesh mesh = denoising_test::plane_grid<Mesh>(8);
+  Mesh mesh = denoising_support::plane_grid<Mesh>(8);
   auto pinned = mesh.add_property_map<Mesh::Vertex_index, bool>("v:pinned", false).first;
   Mesh::Vertex_index lifted, corner = *vertices(mesh).begin();
   for(auto v : vertices(mesh))
@@ -296,7 +296,7 @@ TEST(UpdateVerticesLeastSquares, LiftedVertexIsFlattenedAndConstrainedVertexStay
 TEST(UpdateVerticesLeastSquares, SameResultForAnyThreadCount)
 {
   // over 2048 vertices, so that the dot products add several blocks
-  const Mesh clean = denoising_test::cube<Mesh>(24);
+  const Mesh clean = denoising_support::cube<Mesh>(24);
   ASSERT_GT(num_vertices(clean), 3000u);
   const Mesh noisy = noisy_copy(clean, 0.5);
   auto target = clean_normals(clean);
@@ -314,7 +314,7 @@ TEST(UpdateVerticesLeastSquares, ClassicNormalFiltersTakeTheSameParameter)
   // SRML07, ZFAT11 and ZDZ15 with vertex_update(LEAST_SQUARES): a different
   // result from eq. 10's, finite, and closer to the clean cube than the noisy
   // input (mean angle to the clean normals)
-  const Mesh clean = denoising_test::cube<Mesh>(8);
+  const Mesh clean = denoising_support::cube<Mesh>(8);
   const Mesh noisy = noisy_copy(clean, 0.2);
   const auto target = clean_normals(clean);
   const double e_noisy = mean_angle_to(noisy, target);
@@ -362,7 +362,7 @@ struct Jittered_plane
   D::Flat_mesh m;
   std::vector<D::Vec3> exact, jittered, input;
   double h = 0.;
-  Jittered_plane(int n, double jitter, double lift) : m(Flat_setup<>(denoising_test::plane_grid<Mesh>(n)).m)
+  Jittered_plane(int n, double jitter, double lift) : m(Flat_setup<>(denoising_support::plane_grid<Mesh>(n)).m)
   {
     exact = m.points;
     h = 1. / n;
@@ -435,7 +435,7 @@ TEST(TangentialRelaxation, EvensOutAJitteredPlaneWithinItsCap)
 // only the directions along which they are flat.
 TEST(TangentialRelaxation, CreaseVerticesMoveAlongTheCreaseAndCornersStay)
 {
-  const D::Flat_mesh m = Flat_setup<>(denoising_test::cube<Mesh>(6)).m;
+  const D::Flat_mesh m = Flat_setup<>(denoising_support::cube<Mesh>(6)).m;
   const std::vector<D::Vec3> exact = m.points;
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1., 1.);

@@ -11,7 +11,7 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_ADD_NOISE_H
 #define CGAL_POLYGON_MESH_PROCESSING_ADD_NOISE_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh/mesh_access.h>
 
 #include <algorithm>
 #include <cmath>

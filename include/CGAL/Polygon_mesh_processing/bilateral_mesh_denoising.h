@@ -9,7 +9,7 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_BILATERAL_MESH_DENOISING_H
 #define CGAL_POLYGON_MESH_PROCESSING_BILATERAL_MESH_DENOISING_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/classic_methods.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/classic/classic_methods.h>
 
 #include <CGAL/tags.h>
 

@@ -7,7 +7,7 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_DENOISING_ERROR_H
 #define CGAL_POLYGON_MESH_PROCESSING_DENOISING_ERROR_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh/mesh_access.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>

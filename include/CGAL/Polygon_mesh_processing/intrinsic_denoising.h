@@ -8,9 +8,9 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter/intrinsic_setup.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_denoiser.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/normal_filter_pass.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/weights/normal_filter_pass.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising_report.h>
 
 #include <CGAL/tags.h>

@@ -8,8 +8,7 @@
 #define CGAL_POLYGON_MESH_PROCESSING_INTRINSIC_DENOISING_REPORT_H
 
 #include <CGAL/Polygon_mesh_processing/denoising_types.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_parameters.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/selection_sample.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/automatic_rules.h>
 
 #include <cstddef>
 #include <vector>

@@ -4,8 +4,8 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_UPDATE_VERTICES_FROM_FACE_NORMALS_H
 #define CGAL_POLYGON_MESH_PROCESSING_UPDATE_VERTICES_FROM_FACE_NORMALS_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh/mesh_access.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertices/vertex_update.h>
 
 #include <CGAL/tags.h>
 

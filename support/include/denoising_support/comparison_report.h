@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-namespace denoising_report {
+namespace denoising_support {
 
 // one mesh of the page and its row of the table
 struct Entry
@@ -302,6 +302,6 @@ inline std::string write_report(const std::string& html_path, const Report& repo
   return std::string();
 }
 
-} // namespace denoising_report
+} // namespace denoising_support
 
 #endif // DENOISING_SUPPORT_COMPARISON_REPORT_H

@@ -36,7 +36,7 @@
 
 #include <unistd.h>
 
-namespace denoise_file {
+namespace denoising_support {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -873,6 +873,6 @@ inline std::string write_mesh(const std::string& path, const Mesh& mesh, const s
   return std::string();
 }
 
-} // namespace denoise_file
+} // namespace denoising_support
 
 #endif

@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-namespace denoise_file {
+namespace denoising_support {
 
 // Points and faces (indices into the points) as read.
 struct Soup
@@ -633,6 +633,6 @@ inline std::string read_ply_soup(std::istream& in, std::size_t byte_count, Soup&
   return std::string();
 }
 
-} // namespace denoise_file
+} // namespace denoising_support
 
 #endif

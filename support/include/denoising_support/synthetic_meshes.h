@@ -20,12 +20,12 @@
 #include <type_traits>
 #include <vector>
 
-namespace denoising_test {
+namespace denoising_support {
 
 using P3 = std::array<double, 3>;
 
 // Triangle soup whose equal points (to 1e-9) are merged as they are added.
-class Soup
+class Soup_builder
 {
   std::map<std::tuple<long long, long long, long long>, std::size_t> index_;
 
@@ -133,7 +133,7 @@ public:
 template <typename Mesh>
 Mesh plane_grid(int n, double size = 1.)
 {
-  Soup s;
+  Soup_builder s;
   s.add_subdivided_quad({0., 0., 0.}, {size, 0., 0.}, {0., size, 0.}, n, n, false);
   return s.to_mesh<Mesh>();
 }
@@ -144,7 +144,7 @@ Mesh plane_grid(int n, double size = 1.)
 template <typename Mesh>
 Mesh sliver_plane_grid(int columns, int rows, double height)
 {
-  Soup s;
+  Soup_builder s;
   s.add_subdivided_quad({0., 0., 0.}, {double(columns), 0., 0.}, {0., rows * height, 0.}, columns, rows, false);
   return s.to_mesh<Mesh>();
 }
@@ -153,7 +153,7 @@ Mesh sliver_plane_grid(int columns, int rows, double height)
 template <typename Mesh>
 Mesh cube(int n)
 {
-  Soup s;
+  Soup_builder s;
   for(int axis = 0; axis < 3; ++axis)
     for(double side : {-1., 1.})
     {
@@ -171,7 +171,7 @@ Mesh cube(int n)
 template <typename Mesh>
 Mesh graded_octahedron(int n, double grading = 2.)
 {
-  Soup s;
+  Soup_builder s;
   for(double sx : {-1., 1.})
     for(double sy : {-1., 1.})
       for(double sz : {-1., 1.})
@@ -184,7 +184,7 @@ Mesh graded_octahedron(int n, double grading = 2.)
 template <typename Mesh>
 Mesh hexagonal_prism(int n_around, int n_up, int n_cap, double height = 2.)
 {
-  Soup s;
+  Soup_builder s;
   const double pi = 3.14159265358979323846;
   for(int k = 0; k < 6; ++k)
   {
@@ -217,7 +217,7 @@ Mesh benchmark_prism()
 template <typename Mesh>
 Mesh fan_cylinder(int n, double height = 0.5)
 {
-  Soup s;
+  Soup_builder s;
   const double pi = 3.14159265358979323846;
   const P3 bottom = {0., 0., 0.}, top = {0., 0., height};
   for(int k = 0; k < n; ++k)
@@ -253,6 +253,6 @@ Mesh with_scaled_copy(const Mesh& mesh, double scale, double shift)
   return both;
 }
 
-} // namespace denoising_test
+} // namespace denoising_support
 
 #endif

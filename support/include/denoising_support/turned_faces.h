@@ -15,7 +15,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace denoising_test {
+namespace denoising_support {
 
 // Unnormalised normal (twice the area vector) of each face, by face index.
 template <typename Mesh>
@@ -50,6 +50,6 @@ std::size_t turned_faces(const Mesh& before, const Mesh& after)
   return count;
 }
 
-} // namespace denoising_test
+} // namespace denoising_support
 
 #endif

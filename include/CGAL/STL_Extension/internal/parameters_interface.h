@@ -7,7 +7,7 @@
 // CGAL's (the normal -I order, CGAL's directory being a system one), it is the
 // one found: it pulls in CGAL's own list with #include_next and then appends
 // the denoising package's parameters. The package's additions are listed in
-// exactly one place: internal/Denoising/parameters_list.h.
+// exactly one place: internal/Denoising/core/parameters_list.h.
 //
 // No include guard on purpose: like the file it extends, it is included once
 // per expansion of CGAL_add_named_parameter.
@@ -15,7 +15,7 @@
 // CGAL's list first, then the package's: the order matters
 // clang-format off
 #include_next <CGAL/STL_Extension/internal/parameters_interface.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/parameters_list.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/core/parameters_list.h>
 // clang-format on
 
 #ifndef CGAL_PMP_DENOISING_NAMED_PARAMETERS_ADDED

@@ -2,24 +2,25 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The driver of intrinsic_denoising() (Algorithm 1): reads the options once,
-// then either runs the automatic selection (automatic_selection.h; on a
-// sample of a big mesh, selection_sample.h) or one
-// denoising with the parameters given and automatic defaults for the others,
-// ended by the stopping rule if it is on; the result goes back to the mesh
-// in one write.
+// then either hands the mesh to the automatic mode (automatic/
+// automatic_mode.h; on a big mesh it chooses on a sample of patches,
+// automatic/selection_sample.h, and runs the setting chosen on the whole
+// mesh) or runs one denoising with the parameters given and automatic
+// defaults for the others, ended by the stopping rule if it is on; the
+// result goes back to the mesh in one write.
 
 #ifndef CGAL_PMP_INTERNAL_DENOISING_INTRINSIC_DENOISER_H
 #define CGAL_PMP_INTERNAL_DENOISING_INTRINSIC_DENOISER_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_parameters.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic_selection.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter_iterations.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_setup.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh_access.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/named_parameters.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/selection_sample.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/tangential_relaxation.h>
-#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertex_update.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/automatic_mode.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/automatic_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/selection_sample.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/core/named_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter/filter_iterations.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter/intrinsic_setup.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh/mesh_access.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertices/tangential_relaxation.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/vertices/vertex_update.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising_report.h>
 #include <CGAL/assertions.h>
 
@@ -181,67 +182,14 @@ public:
 private:
   static constexpr const char* fname = "intrinsic_denoising()";
 
-  auto progress_callback() const
-  {
-    return parameters::choose_parameter(parameters::get_parameter(np_, internal_np::progress_callback), No_progress());
-  }
-
-  // The selection on the mesh that `maps` gives (the input or a sample of
-  // it); `finish`: the result is the one returned (relaxed along the surface
-  // if asked), not only the choice of a setting.
+  // The selection of the automatic mode on the mesh that `maps` gives (the
+  // input or a sample of it); `finish`: see Automatic_mode::select().
   template <typename Maps>
   Candidate_run select_on(const Maps& maps, bool finish)
   {
-    Automatic_selection<ConcurrencyTag> selection(vertex_iterations_, prevent_folds_, keep_normals, vertex_update_);
-    const std::vector<char> constrained = maps.constrained(tmesh_);
-    selection.run_candidates(
-        Selection_rules::candidates, Selection_rules::number_of_candidates,
-        [this, &maps](const Selection_rules::Candidate& candidate) { return candidate_setup(maps, candidate); },
-        constrained, progress_callback());
-    const std::size_t best = selection.choose();
-    std::vector<Candidate_run>& runs = selection.runs();
-    report_selection(selection, best);
-    if(runs[best].iterations == 0)
-      return std::move(runs[best]);
-
-    const Selection_rules::Candidate& kept = Selection_rules::candidates[best];
-    if(!selection.reuse_paths(kept.relative_radius, constrained)) // the paths of the kept candidate's radius
-      selection.setup_paths(candidate_setup(maps, kept), constrained);
-    // Sparse noise (sparse_noise.h): if the kept result's residual says that
-    // only a few vertices were noisy, those alone are denoised, from the
-    // input, with the kept kernel, radius and number of iterations.
-    const Sparse_noise_test test = selection.test_sparse_noise(runs[best]);
-    report_.inlier_residual_correlation = test.inlier_correlation;
-    if(test.sparse)
-    {
-      Candidate_run outliers_only = selection.run_outliers_only(kept.sigma, report_.iterations, test.outlier);
-      report_.outlier_vertices = test.outliers;
-      report_.displacement = outliers_only.trajectory.back().rms;
-      if(relax_ && finish)
-        report_.relaxed_vertices = selection.relax(outliers_only, test.outlier);
-      return outliers_only;
-    }
-    Candidate_run result = self_check(maps, selection, std::move(runs[best]), kept, constrained);
-    // The second pass (Selection_rules::second_pass_share): if the kept
-    // kernel changes its own short run's result by more than half as much
-    // as that run changed the input, what the run removed was mostly shape,
-    // and the input is kept.
-    if(result.iterations > 0 && result.iterations <= Selection_rules::second_pass_max_iterations)
-    {
-      const std::pair<double, double> angles = selection.second_pass_angles(result, kept.sigma);
-      report_.change_angle = angles.first;
-      report_.second_pass_angle = angles.second;
-      if(angles.second > Selection_rules::second_pass_share * angles.first)
-      {
-        report_.iterations = 0;
-        report_.stop_reason = Intrinsic_stop_reason::SECOND_PASS;
-        report_.displacement = 0.;
-        return selection.run_from_input(kept.sigma, 0);
-      }
-    }
-    if(relax_ && finish)
-      report_.relaxed_vertices = selection.relax(result);
-    return result;
+    Automatic_mode<ConcurrencyTag> mode(automatic_mode_options(), report_);
+    return mode.select([this, &maps](const Selection_rules::Candidate& c) { return candidate_setup(maps, c); },
+                       maps.constrained(tmesh_), progress_callback(), finish);
   }
 
   // The setting the report holds (kernel, radius, iterations: chosen on a
@@ -249,32 +197,39 @@ private:
   // surface if asked; with no iteration, the input.
   Candidate_run run_chosen_setting()
   {
-    const double sigma = report_.sigma_range, radius = report_.relative_neighbor_radius;
-    const unsigned int k = report_.iterations;
-    if(k == 0)
+    if(report_.iterations > 0)
     {
-      Candidate_run input;
-      const Flat_mesh m = maps_.flat(tmesh_, fname);
-      report_.mean_edge_length = mean_edge_length<ConcurrencyTag>(m);
-      input.points = m.points;
-      if constexpr(keep_normals)
-      {
-        Face_data faces;
-        compute_face_data<ConcurrencyTag>(m, m.points, faces);
-        input.normals = std::move(faces.normals);
-      }
-      return input;
+      Automatic_mode<ConcurrencyTag> mode(automatic_mode_options(), report_);
+      return mode.run_chosen_setting([this](const Selection_rules::Candidate& c) { return candidate_setup(maps_, c); },
+                                     maps_.constrained(tmesh_));
     }
-    Automatic_selection<ConcurrencyTag> selection(vertex_iterations_, prevent_folds_, keep_normals, vertex_update_);
-    const std::vector<char> constrained = maps_.constrained(tmesh_);
-    selection.setup_paths(candidate_setup(maps_, {sigma, radius}), constrained);
-    Candidate_run result = selection.run_from_input(sigma, k);
-    report_.mean_edge_length = selection.mean_edge_length_of_input();
-    report_.neighbor_radius = radius * selection.centroid_distance();
-    report_.displacement = result.trajectory[k - 1].rms;
-    if(relax_)
-      report_.relaxed_vertices = selection.relax(result);
-    return result;
+    Candidate_run input;
+    const Flat_mesh m = maps_.flat(tmesh_, fname);
+    report_.mean_edge_length = mean_edge_length<ConcurrencyTag>(m);
+    input.points = m.points;
+    if constexpr(keep_normals)
+    {
+      Face_data faces;
+      compute_face_data<ConcurrencyTag>(m, m.points, faces);
+      input.normals = std::move(faces.normals);
+    }
+    return input;
+  }
+
+  Automatic_mode_options automatic_mode_options() const
+  {
+    Automatic_mode_options o;
+    o.vertex_iterations = vertex_iterations_;
+    o.prevent_folds = prevent_folds_;
+    o.keep_normals = keep_normals;
+    o.vertex_update = vertex_update_;
+    o.relax = relax_;
+    return o;
+  }
+
+  auto progress_callback() const
+  {
+    return parameters::choose_parameter(parameters::get_parameter(np_, internal_np::progress_callback), No_progress());
   }
 
   // The paths of a candidate of the automatic selection on the mesh that
@@ -287,114 +242,6 @@ private:
     defaults.relative_radius = candidate.relative_radius;
     return make_intrinsic_setup<ConcurrencyTag>(tmesh_, np_, maps, fname,
                                                 [&defaults](const Flat_mesh&) { return defaults; });
-  }
-
-  // The self-check of the kept run `run` (candidate `kept`, on the current
-  // paths of `selection`): the kept kernel runs on a synthetic copy of its
-  // result on the paths of the candidate's radius, then on those of the
-  // other radii still held, walking from the candidate's radius towards
-  // larger radii and towards smaller ones; a walk stops at the first radius
-  // that does not bring the copy closer than the best so far, as the copy's
-  // error is taken to have one minimum over the radius (too small a support
-  // leaves noise, too large a one removes shape). The candidate's radius and
-  // the nearest on either side, always checked, run together. A radius other
-  // than the candidate's is taken if the copy came more than
-  // Selection_rules::self_check_tolerance closer to the result with it;
-  // then, or if another number of iterations recovered the copy better, the
-  // run is redone from the input (or, with the candidate's radius and more
-  // iterations, goes on from its result).
-  template <typename Maps>
-  Candidate_run self_check(const Maps& maps, Automatic_selection<ConcurrencyTag>& selection, Candidate_run&& run,
-                           const Selection_rules::Candidate& kept, const std::vector<char>& constrained)
-  {
-    const std::vector<Vec3> copy = selection.synthetic_copy(run);
-    std::vector<double> radii = selection.held_radii(); // the candidate's among them: its paths are current
-    std::sort(radii.begin(), radii.end());
-    const auto own = std::find_if(radii.begin(), radii.end(),
-                                  [&run](double r) { return same_relative_radius(r, run.relative_radius); });
-    CGAL_assertion(own != radii.end());
-    const std::ptrdiff_t start = own - radii.begin(), count = std::ptrdiff_t(radii.size());
-    std::vector<double> first(1, run.relative_radius);
-    if(start + 1 < count)
-      first.push_back(radii[std::size_t(start + 1)]);
-    if(start >= 1)
-      first.push_back(radii[std::size_t(start - 1)]);
-    std::vector<std::vector<double>> first_errors = selection.self_check_errors(run, kept.sigma, copy, first, true);
-    std::vector<double> errors = std::move(first_errors[0]);
-    const auto smallest = [](const std::vector<double>& e) { return *std::min_element(e.begin(), e.end()); };
-    report_.maximum_iterations = Selection_rules::self_check_max_iterations;
-    report_.self_check_radii.assign(1, run.relative_radius);
-    report_.self_check_smallest_errors.assign(1, smallest(errors));
-    double radius = run.relative_radius;
-    double limit = smallest(errors) * (1. - Selection_rules::self_check_tolerance);
-    std::size_t next = 1; // of first_errors
-    for(std::ptrdiff_t step : {std::ptrdiff_t(1), std::ptrdiff_t(-1)})
-      for(std::ptrdiff_t i = start + step; i >= 0 && i < count; i += step)
-      {
-        const double r = radii[std::size_t(i)];
-        std::vector<double> e =
-            i == start + step
-                ? std::move(first_errors[next++])
-                : std::move(selection.self_check_errors(run, kept.sigma, copy, std::vector<double>(1, r), false)[0]);
-        const double e_min = smallest(e);
-        report_.self_check_radii.push_back(r);
-        report_.self_check_smallest_errors.push_back(e_min);
-        if(!(e_min < limit))
-          break; // the error rises from here on in this direction
-        limit = e_min;
-        radius = r;
-        errors = std::move(e);
-      }
-    if(!selection.reuse_paths(radius, constrained))
-      selection.setup_paths(candidate_setup(maps, {kept.sigma, radius}), constrained);
-    const unsigned int k = self_check_iterations(errors, run.iterations);
-    report_.self_check_errors = std::move(errors);
-    const bool same_radius = radius == run.relative_radius;
-    if(same_radius && k == run.iterations)
-      return std::move(run);
-    Candidate_run changed = !same_radius         ? selection.run_from_input(kept.sigma, k)
-                            : k > run.iterations ? selection.run_on(std::move(run), kept.sigma, k - run.iterations)
-                                                 : selection.run_again(kept.sigma, k);
-    report_.iterations = k;
-    report_.stop_reason = Intrinsic_stop_reason::SELF_CHECK;
-    report_.displacement = k > 0 ? changed.trajectory[k - 1].rms : 0.;
-    report_.relative_neighbor_radius = radius;
-    report_.neighbor_radius = radius * selection.centroid_distance();
-    return changed;
-  }
-
-  // Describes the candidates and the one kept (`best`) in the report.
-  void report_selection(const Automatic_selection<ConcurrencyTag>& selection, std::size_t best)
-  {
-    report_.candidates.clear();
-    for(const Candidate_run& r : selection.runs())
-    {
-      Intrinsic_candidate_report c;
-      c.sigma = r.sigma;
-      c.relative_neighbor_radius = r.relative_radius;
-      c.iterations = r.iterations;
-      c.stopped_by_correlation = r.stopped_by_correlation;
-      c.residual_rms = r.iterations > 0 ? r.trajectory[r.iterations - 1].rms : 0.;
-      c.residual_correlation = r.iterations > 0 ? r.trajectory[r.iterations - 1].correlation : 0.;
-      c.flat_share = r.flat_share;
-      c.score = r.score;
-      report_.candidates.push_back(c);
-    }
-    report_.chosen_candidate = best;
-    const Intrinsic_candidate_report& w = report_.candidates[best];
-    report_.mean_edge_length = selection.mean_edge_length_of_input();
-    report_.noise_level = w.residual_rms;
-    report_.noise_level_estimated = true;
-    report_.displacement = w.residual_rms;
-    report_.sigma_spatial = report_.sigma_range = w.sigma;
-    report_.relative_neighbor_radius = w.relative_neighbor_radius;
-    report_.neighbor_radius = w.relative_neighbor_radius * selection.centroid_distance();
-    report_.vertex_iterations = vertex_iterations_;
-    report_.vertex_update = vertex_update_;
-    report_.maximum_iterations = Selection_rules::max_iterations;
-    report_.iterations = w.iterations;
-    report_.stop_reason =
-        w.stopped_by_correlation ? Intrinsic_stop_reason::RESIDUAL_CORRELATED : Intrinsic_stop_reason::ITERATION_LIMIT;
   }
 
   // The defaults of the parameters not given, from the noise level of `mesh`
