@@ -188,23 +188,15 @@ Mesh::Property_map<vertex_descriptor, bool> constrained_map(Input& input, const 
 
 PMP::Vertex_update read_vertex_update(const std::string& name)
 {
-  if(name == "paper")
-    return PMP::Vertex_update::PAPER;
-  if(name == "least_squares")
-    return PMP::Vertex_update::LEAST_SQUARES;
+  if(const auto* e = denoising_support::find_name(denoising_support::vertex_update_names, name, true))
+    return e->value;
   throw py::value_error("vertex_update must be 'paper' or 'least_squares', not '" + name + "'");
 }
 
 PMP::Intrinsic_path_strategy read_paths(const std::string& name)
 {
-  if(name == "square_pattern")
-    return PMP::Intrinsic_path_strategy::SQUARE_PATTERN;
-  if(name == "geodesic")
-    return PMP::Intrinsic_path_strategy::GEODESIC;
-  if(name == "direct")
-    return PMP::Intrinsic_path_strategy::DIRECT;
-  if(name == "shortest_graph_path")
-    return PMP::Intrinsic_path_strategy::SHORTEST_GRAPH_PATH;
+  if(const auto* e = denoising_support::find_name(denoising_support::path_strategy_names, name, true))
+    return e->value;
   throw py::value_error("path_strategy must be 'square_pattern', 'geodesic', 'direct' or 'shortest_graph_path', not '" +
                         name + "'");
 }
@@ -251,7 +243,8 @@ void run_released(Work&& work)
 // ---------------------------------------------------------------------------
 // intrinsic_denoising()
 
-struct Intrinsic_options
+// The arguments of intrinsic_denoising() as Python gives them.
+struct Intrinsic_arguments
 {
   bool automatic_parameters = true;
   std::optional<double> noise_level, sigma_spatial, sigma_range, neighbor_radius, relative_neighbor_radius;
@@ -265,87 +258,12 @@ struct Intrinsic_options
   bool use_step_length = false, include_self_weight = false, prevent_folds = true;
 };
 
-struct Intrinsic_call
-{
-  Mesh& mesh;
-  const Intrinsic_options& o;
-  PMP::Intrinsic_denoising_report report;
-};
-
 unsigned int to_unsigned(long long x, const char* name)
 {
   if(x < 0 || x > static_cast<long long>(std::numeric_limits<unsigned int>::max()))
     throw py::value_error(std::string("intrinsic_denoising(): ") + name +
                           " must be a non-negative integer below 2^32, not " + std::to_string(x));
   return static_cast<unsigned int>(x);
-}
-
-// The named parameters whose presence changes what the automatic mode does
-// are chained stage by stage, each only when given (as the `denoise` tool
-// does), so that the automatic mode chooses the others.
-template <int stage, typename NamedParameters>
-void run_intrinsic(Intrinsic_call& call, const NamedParameters& np)
-{
-  const Intrinsic_options& o = call.o;
-  if constexpr(stage == 0)
-  {
-    if(o.number_of_iterations)
-      run_intrinsic<1>(call, np.number_of_iterations(static_cast<unsigned int>(*o.number_of_iterations)));
-    else
-      run_intrinsic<1>(call, np);
-  }
-  else if constexpr(stage == 1)
-  {
-    if(o.sigma_spatial)
-      run_intrinsic<2>(call, np.sigma_spatial(*o.sigma_spatial));
-    else
-      run_intrinsic<2>(call, np);
-  }
-  else if constexpr(stage == 2)
-  {
-    if(o.sigma_range)
-      run_intrinsic<3>(call, np.sigma_range(*o.sigma_range));
-    else
-      run_intrinsic<3>(call, np);
-  }
-  else if constexpr(stage == 3)
-  {
-    if(o.neighbor_radius)
-      run_intrinsic<4>(call, np.neighbor_radius(*o.neighbor_radius));
-    else if(o.relative_neighbor_radius)
-      run_intrinsic<4>(call, np.relative_neighbor_radius(*o.relative_neighbor_radius));
-    else
-      run_intrinsic<4>(call, np);
-  }
-  else if constexpr(stage == 4)
-  {
-    if(o.noise_level)
-      run_intrinsic<5>(call, np.noise_level(*o.noise_level));
-    else
-      run_intrinsic<5>(call, np);
-  }
-  else
-    call.report = PMP::intrinsic_denoising<Tag>(call.mesh, np);
-}
-
-const char* stop_reason_name(PMP::Intrinsic_stop_reason r)
-{
-  switch(r)
-  {
-  case PMP::Intrinsic_stop_reason::ITERATION_LIMIT:
-    return "iteration_limit";
-  case PMP::Intrinsic_stop_reason::NOISE_LEVEL_REACHED:
-    return "noise_level_reached";
-  case PMP::Intrinsic_stop_reason::CONVERGED:
-    return "converged";
-  case PMP::Intrinsic_stop_reason::SELF_CHECK:
-    return "self_check";
-  case PMP::Intrinsic_stop_reason::SECOND_PASS:
-    return "second_pass";
-  case PMP::Intrinsic_stop_reason::RESIDUAL_CORRELATED:
-    break;
-  }
-  return "residual_correlated";
 }
 
 py::dict report_dict(const PMP::Intrinsic_denoising_report& r)
@@ -360,10 +278,10 @@ py::dict report_dict(const PMP::Intrinsic_denoising_report& r)
   d["neighbor_radius"] = r.neighbor_radius;
   d["relative_neighbor_radius"] = r.relative_neighbor_radius;
   d["vertex_iterations"] = r.vertex_iterations;
-  d["vertex_update"] = r.vertex_update == PMP::Vertex_update::PAPER ? "paper" : "least_squares";
+  d["vertex_update"] = denoising_support::name_of(denoising_support::vertex_update_names, r.vertex_update).python;
   d["maximum_iterations"] = r.maximum_iterations;
   d["iterations"] = r.iterations;
-  d["stop_reason"] = stop_reason_name(r.stop_reason);
+  d["stop_reason"] = denoising_support::name_of(denoising_support::stop_reason_names, r.stop_reason).python;
   d["displacement"] = r.displacement;
   py::list candidates;
   for(const PMP::Intrinsic_candidate_report& c : r.candidates)
@@ -395,7 +313,7 @@ py::dict report_dict(const PMP::Intrinsic_denoising_report& r)
 }
 
 py::tuple denoise(const py::handle& V, const py::handle& F, const py::object& constrained, const py::object& progress,
-                  long long threads, const Intrinsic_options& o)
+                  long long threads, const Intrinsic_arguments& o)
 {
   // argument checks that need no mesh (the library checks the values)
   if(o.number_of_iterations)
@@ -424,32 +342,35 @@ py::tuple denoise(const py::handle& V, const py::handle& F, const py::object& co
     if(!progress.is_none())
       progress(done, total);
   };
-  const bool stop = o.stop_when_converged ? *o.stop_when_converged : o.automatic_parameters && !o.number_of_iterations;
-  // the library's default of relax_along_surface: when the automatic selection runs
-  const bool relax = o.relax_along_surface
-                         ? *o.relax_along_surface
-                         : o.automatic_parameters && stop && !o.number_of_iterations && !o.sigma_spatial &&
-                               !o.sigma_range && !o.neighbor_radius && !o.relative_neighbor_radius && !o.noise_level;
-  const auto np = CGAL::parameters::vertex_iterations(vertex_iterations)
-                      .spatial_exponent(o.spatial_exponent)
-                      .range_exponent(o.range_exponent)
-                      .path_strategy(strategy)
-                      .use_step_length(o.use_step_length)
-                      .geodesic_patch_rings(rings)
-                      .include_self_weight(o.include_self_weight)
-                      .prevent_folds(o.prevent_folds)
-                      .vertex_update(update)
-                      .automatic_parameters(o.automatic_parameters)
-                      .stop_when_converged(stop)
-                      .relax_along_surface(relax)
-                      .progress_callback(callback)
-                      .selection_sample_faces(sample_faces)
+  PMP::internal::Denoising::Intrinsic_options options;
+  options.automatic_parameters = o.automatic_parameters;
+  if(o.number_of_iterations)
+    options.number_of_iterations = static_cast<unsigned int>(*o.number_of_iterations);
+  options.filter.sigma_spatial = o.sigma_spatial;
+  options.filter.sigma_range = o.sigma_range;
+  options.filter.neighbor_radius = o.neighbor_radius;
+  options.filter.relative_neighbor_radius = o.relative_neighbor_radius;
+  options.noise_level = o.noise_level;
+  options.stop_when_converged = o.stop_when_converged;
+  options.relax_along_surface = o.relax_along_surface;
+  options.vertex_iterations = vertex_iterations;
+  options.filter.spatial_exponent = o.spatial_exponent;
+  options.filter.range_exponent = o.range_exponent;
+  options.filter.path_strategy = strategy;
+  options.filter.use_step_length = o.use_step_length;
+  options.filter.geodesic_patch_rings = rings;
+  options.filter.include_self_weight = o.include_self_weight;
+  options.prevent_folds = o.prevent_folds;
+  options.vertex_update = update;
+  options.selection_sample_faces = sample_faces;
+  const auto np = CGAL::parameters::progress_callback(callback)
                       .vertex_is_constrained_map(constrained_vertices)
                       .face_normal_map(normals);
-  Intrinsic_call call{input->mesh, o, PMP::Intrinsic_denoising_report()};
-  run_released([&] { run_intrinsic<0>(call, np); });
+  PMP::Intrinsic_denoising_report result;
+  run_released(
+      [&] { result = PMP::internal::Denoising::intrinsic_denoising_with_options<Tag>(input->mesh, options, np); });
 
-  py::dict report = report_dict(call.report);
+  py::dict report = report_dict(result);
   py::array_t<double> filtered({static_cast<py::ssize_t>(num_faces(input->mesh)), py::ssize_t(3)});
   double* n = filtered.mutable_data();
   std::size_t i = 0;
@@ -556,15 +477,9 @@ py::tuple arrays_of(const Mesh& mesh)
   return py::make_tuple(V, F);
 }
 
-} // namespace
-
-PYBIND11_MODULE(cgal_intrinsic_denoising, m)
+// The module's functions for intrinsic_denoising() as `denoise`.
+void define_intrinsic(py::module_& m)
 {
-  m.doc() = "Feature-preserving mesh denoising with the generalized intrinsic filter (CGAL package): "
-            "intrinsic_denoising() on NumPy arrays, the classic methods, the noise models and the error "
-            "metrics E_n and E_v. A mesh is V, an (n, 3) array of coordinates, and F, an (m, 3) array of "
-            "vertex indices; functions return new arrays and never modify their arguments.";
-
   m.def(
       "denoise",
       [](const py::handle& V, const py::handle& F, bool automatic_parameters, std::optional<double> noise_level,
@@ -576,7 +491,7 @@ PYBIND11_MODULE(cgal_intrinsic_denoising, m)
          bool include_self_weight, bool prevent_folds, std::optional<bool> relax_along_surface,
          long long selection_sample_faces, const py::object& constrained, const py::object& progress,
          long long threads) {
-        Intrinsic_options o;
+        Intrinsic_arguments o;
         o.automatic_parameters = automatic_parameters;
         o.noise_level = noise_level;
         o.number_of_iterations = number_of_iterations;
@@ -606,7 +521,7 @@ PYBIND11_MODULE(cgal_intrinsic_denoising, m)
       py::arg("relative_neighbor_radius") = py::none(), py::arg("path_strategy") = "square_pattern",
       py::arg("use_step_length") = false, py::arg("geodesic_patch_rings") = 0, py::arg("include_self_weight") = false,
       py::arg("prevent_folds") = true, py::arg("relax_along_surface") = py::none(),
-      py::arg("selection_sample_faces") = Intrinsic_options().selection_sample_faces,
+      py::arg("selection_sample_faces") = Intrinsic_arguments().selection_sample_faces,
       py::arg("constrained") = py::none(), py::arg("progress") = py::none(), py::arg("threads") = 0,
       R"(Denoises the triangle mesh (V, F) with intrinsic_denoising() (Algorithm 1 of "Mesh denoising via
 generalized intrinsic filter on 2D manifold") and returns (V_out, report).
@@ -627,7 +542,11 @@ faces (report['selection_sample_faces']), which then runs once on the whole mesh
 constrained: boolean array, one entry per vertex, True for vertices that never move. progress: callable progress(done, total) after each iteration.
 threads: 0 for all, or a limit (the result does not depend on it). Ctrl-C interrupts after the
 current iteration. Bad input raises ValueError or TypeError naming the problem.)");
+}
 
+// The module's functions for the classic methods that move vertices directly or by one normal pass: FDC03, JDD03, SRML07.
+void define_classic_smoothing(py::module_& m)
+{
   m.def(
       "bilateral_mesh_denoising",
       [](const py::handle& V, const py::handle& F, double sigma_spatial, std::optional<double> sigma_range,
@@ -684,7 +603,11 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       "SRML07, the fast and effective feature-preserving denoising of Sun et al. 2007 "
       "(fast_feature_preserving_denoising()); relax_along_surface: relax the result along the surface as "
       "denoise() does. Returns the new V.");
+}
 
+// The module's functions for the classic normal filters and the global L0 method: ZFAT11, HS13, ZDZ15.
+void define_classic_normal_filters(py::module_& m)
+{
   m.def(
       "bilateral_normal_denoising",
       [](const py::handle& V, const py::handle& F, double sigma_spatial, double sigma_range,
@@ -753,7 +676,11 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       "ZDZ15, guided mesh normal filtering of Zhang et al. 2015 (guided_normal_denoising()); neighbor_radius, if "
       "given, replaces relative_neighbor_radius; relax_along_surface: relax the result along the surface as "
       "denoise() does. Returns the new V.");
+}
 
+// The module's functions for the seeded noise models.
+void define_noise_models(py::module_& m)
+{
   m.def(
       "add_gaussian_noise",
       [](const py::handle& V, const py::handle& F, double sigma, long long seed, const py::object& constrained) {
@@ -796,7 +723,11 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       py::arg("constrained") = py::none(),
       "Simulated depth-scan noise: along camera rays, growing with depth, with a low-frequency term and outliers "
       "(add_depth_scan_noise()). Returns the new V.");
+}
 
+// The module's functions for the error metrics E_n and E_v.
+void define_metrics(py::module_& m)
+{
   m.def(
       "face_normal_error",
       [](const py::handle& V, const py::handle& F, const py::handle& V_reference, const py::object& F_reference) {
@@ -815,7 +746,11 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       py::arg("V"), py::arg("F"), py::arg("V_reference"), py::arg("F_reference") = py::none(),
       "E_v (eq. 11): the area-weighted distance from the vertices of (V, F) to the reference surface "
       "(F_reference default: F).");
+}
 
+// The module's functions for the mesh files of the `denoise` tool.
+void define_file_io(py::module_& m)
+{
   m.def(
       "read_mesh",
       [](const std::string& path) {
@@ -864,4 +799,21 @@ current iteration. Bad input raises ValueError or TypeError naming the problem.)
       py::arg("path"), py::arg("V"), py::arg("F"),
       "Writes (V, F) to path (OFF, OBJ, PLY or STL, by the extension; 17 significant digits) through a temporary "
       "file and a rename, so that path is either unchanged or complete. Raises OSError if it cannot be written.");
+}
+
+} // namespace
+
+PYBIND11_MODULE(cgal_intrinsic_denoising, m)
+{
+  m.doc() = "Feature-preserving mesh denoising with the generalized intrinsic filter (CGAL package): "
+            "intrinsic_denoising() on NumPy arrays, the classic methods, the noise models and the error "
+            "metrics E_n and E_v. A mesh is V, an (n, 3) array of coordinates, and F, an (m, 3) array of "
+            "vertex indices; functions return new arrays and never modify their arguments.";
+
+  define_intrinsic(m);
+  define_classic_smoothing(m);
+  define_classic_normal_filters(m);
+  define_noise_models(m);
+  define_metrics(m);
+  define_file_io(m);
 }

@@ -201,7 +201,7 @@ static Grid_best grid_search(const Input& in, bool trace, const Grid& grid = sta
     const D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters> maps(in.noisy,
                                                                               CGAL::parameters::default_values());
     const auto np = CGAL::parameters::relative_neighbor_radius(r);
-    D::Intrinsic_setup base = D::make_intrinsic_setup<Tag>(in.noisy, np, maps, "grid");
+    D::Intrinsic_setup base = D::make_intrinsic_setup<Tag>(in.noisy, D::read_filter_options(np), maps, "grid");
     const double L = D::mean_edge_length(base.mesh);
     // the setup may renumber faces (not vertices): reference normals in its order
     D::Face_data ref_fd;

@@ -268,7 +268,7 @@ void oracle(const Mesh& noisy, const Mesh& reference, Reference& out, std::FILE*
   for(double r : radii)
   {
     const auto np = CGAL::parameters::relative_neighbor_radius(r);
-    D::Intrinsic_setup base = D::make_intrinsic_setup<Tag>(noisy, np, maps, "oracle");
+    D::Intrinsic_setup base = D::make_intrinsic_setup<Tag>(noisy, D::read_filter_options(np), maps, "oracle");
     const double L = D::mean_edge_length(base.mesh);
     const D::Csr adjacency = D::vertex_adjacency(base.mesh);
     D::Face_data ref_fd;
@@ -336,9 +336,9 @@ void candidate_statistics(const Input& in, std::FILE* out)
       D::Setup_defaults d;
       d.sigma_spatial = d.sigma_range = k.sigma;
       d.relative_radius = k.relative_radius;
-      selection.setup_paths(
-          D::make_intrinsic_setup<Tag>(noisy, np, maps, "candidates", [&d](const D::Flat_mesh&) { return d; }),
-          constrained);
+      selection.setup_paths(D::make_intrinsic_setup<Tag>(noisy, D::read_filter_options(np), maps, "candidates",
+                                                         [&d](const D::Flat_mesh&) { return d; }),
+                            constrained);
     }
     selection.run(k.sigma);
   }

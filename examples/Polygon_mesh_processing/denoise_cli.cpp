@@ -396,101 +396,97 @@ std::string write_cli_report(const Method_settings& m, const std::string& input_
   return R::write_report(m.report, report);
 }
 
-// One run of intrinsic_denoising(): the named parameters are chained stage by
-// stage, each optional one only when it was given on the command line, so
-// that the automatic mode chooses the others.
-struct Intrinsic_run
+// The options of intrinsic_denoising() from the command line: those that the
+// automatic mode would otherwise choose (k, the sigmas, the radius, the noise
+// level, the stopping rule, the relaxation) only when given, the others always
+// (their command-line defaults are the library's).
+PMP::internal::Denoising::Intrinsic_options intrinsic_options(const Settings& s, const po::variables_map& vm)
 {
-  Mesh& mesh;
-  const Settings& s;
-  const po::variables_map& vm;
-  PMP::Intrinsic_denoising_report report;
-  std::string problem;
-};
-
-template <int stage, typename NamedParameters>
-void run_intrinsic(Intrinsic_run& run, const NamedParameters& np)
-{
-  const Settings& s = run.s;
-  auto given = [&](const char* name) { return run.vm.count(name) > 0; };
-  if constexpr(stage == 0)
-  {
-    if(given("iterations"))
-      run_intrinsic<1>(run, np.number_of_iterations(static_cast<unsigned int>(s.iterations)));
-    else
-      run_intrinsic<1>(run, np);
-  }
-  else if constexpr(stage == 1)
-  {
-    if(given("sigma-spatial"))
-      run_intrinsic<2>(run, np.sigma_spatial(s.sigma_spatial));
-    else
-      run_intrinsic<2>(run, np);
-  }
-  else if constexpr(stage == 2)
-  {
-    if(given("sigma-range"))
-      run_intrinsic<3>(run, np.sigma_range(s.sigma_range));
-    else
-      run_intrinsic<3>(run, np);
-  }
-  else if constexpr(stage == 3)
-  {
-    if(given("radius"))
-      run_intrinsic<4>(run, np.neighbor_radius(s.radius));
-    else if(given("relative-radius"))
-      run_intrinsic<4>(run, np.relative_neighbor_radius(s.relative_radius));
-    else
-      run_intrinsic<4>(run, np);
-  }
-  else if constexpr(stage == 4)
-  {
-    if(given("noise-level"))
-      run_intrinsic<5>(run, np.noise_level(s.noise_level));
-    else
-      run_intrinsic<5>(run, np);
-  }
-  else
-  {
-    // One concurrency tag only (the stages above multiply the instantiations);
-    // --threads 1 limits TBB to one thread instead (see main()).
-    run.problem = denoising_support::denoise<CGAL::Parallel_if_available_tag>(run.mesh, np, &run.report);
-  }
+  namespace S = denoising_support;
+  PMP::internal::Denoising::Intrinsic_options o;
+  o.automatic_parameters = !s.fixed;
+  if(vm.count("iterations"))
+    o.number_of_iterations = static_cast<unsigned int>(s.iterations);
+  if(vm.count("sigma-spatial"))
+    o.filter.sigma_spatial = s.sigma_spatial;
+  if(vm.count("sigma-range"))
+    o.filter.sigma_range = s.sigma_range;
+  if(vm.count("radius"))
+    o.filter.neighbor_radius = s.radius;
+  else if(vm.count("relative-radius"))
+    o.filter.relative_neighbor_radius = s.relative_radius;
+  if(vm.count("noise-level"))
+    o.noise_level = s.noise_level;
+  if(vm.count("stop-when-converged"))
+    o.stop_when_converged = s.stop_when_converged == "yes";
+  if(vm.count("relax"))
+    o.relax_along_surface = s.relax == "yes";
+  o.vertex_iterations = static_cast<unsigned int>(s.vertex_iterations);
+  o.filter.spatial_exponent = s.spatial_exponent;
+  o.filter.range_exponent = s.range_exponent;
+  o.filter.path_strategy = S::find_name(S::path_strategy_names, s.paths, false)->value;
+  o.filter.use_step_length = s.step_length;
+  o.filter.geodesic_patch_rings = static_cast<unsigned int>(s.patch_rings);
+  o.filter.include_self_weight = s.self_weight;
+  o.prevent_folds = !s.no_fold_guard;
+  o.vertex_update = S::find_name(S::vertex_update_names, s.vertex_update, false)->value;
+  o.selection_sample_faces = static_cast<std::size_t>(s.selection_sample);
+  return o;
 }
 
 bool positive_finite(double x) { return std::isfinite(x) && x > 0.; }
 
-} // namespace
-
-int main(int argc, char** argv)
+// One run of the tool: its options, meshes and results.
+struct Cli_run
 {
   Settings s;
+  Method_settings method;
+  po::variables_map vm;
+  bool talk = true;
+  Mesh input, reference, denoised;
+  PMP::Intrinsic_denoising_report report;
+  double seconds = 0.;
+};
+
+const int go_on = -1; // what the steps below return when the run goes on
+
+// Parses the command line into `r`; the exit code of a usage error or of
+// --help, or go_on.
+int parse_command_line(int argc, char** argv, Cli_run& r)
+{
+  Settings& s = r.s;
   po::options_description options = make_options(s);
   po::options_description hidden;
   hidden.add_options()("input", po::value(&s.input));
-  Method_settings method;
-  add_method_options(options, hidden, method);
+  add_method_options(options, hidden, r.method);
   po::options_description all;
   all.add(options).add(hidden);
   po::positional_options_description positional;
   positional.add("input", 1);
-  po::variables_map vm;
   try
   {
-    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
-    po::notify(vm);
+    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), r.vm);
+    po::notify(r.vm);
   }
   catch(const po::error& e)
   {
     return fail(exit_usage, e.what());
   }
-  if(vm.count("help"))
+  if(r.vm.count("help"))
   {
     std::cout << help_head << "OPTIONS\n" << options << help_tail;
     return exit_ok;
   }
+  return go_on;
+}
 
-  // usage checks
+// The checks of the options' values (the first failing one's exit code, or
+// go_on); sets the default output path.
+int check_usage(Cli_run& r)
+{
+  Settings& s = r.s;
+  const po::variables_map& vm = r.vm;
+  const Method_settings& method = r.method;
   if(s.input.empty())
     return fail(exit_usage, "no input file");
   const long long max_count = 1000000;
@@ -501,9 +497,9 @@ int main(int argc, char** argv)
     return fail(exit_usage, "--selection-sample must lie in [0, 4294967295]");
   if(s.seed < 0 || s.seed > 4294967295LL)
     return fail(exit_usage, "--seed must lie in [0, 4294967295]");
-  if(s.paths != "square" && s.paths != "direct" && s.paths != "graph" && s.paths != "geodesic")
+  if(!denoising_support::find_name(denoising_support::path_strategy_names, s.paths, false))
     return fail(exit_usage, "--paths must be square, direct, graph or geodesic, not '" + s.paths + "'");
-  if(s.vertex_update != "paper" && s.vertex_update != "least-squares")
+  if(!denoising_support::find_name(denoising_support::vertex_update_names, s.vertex_update, false))
     return fail(exit_usage, "--vertex-update must be paper or least-squares, not '" + s.vertex_update + "'");
   if(vm.count("relax") && s.relax != "yes" && s.relax != "no")
     return fail(exit_usage, "--relax must be yes or no, not '" + s.relax + "'");
@@ -553,10 +549,16 @@ int main(int argc, char** argv)
     if(std::filesystem::exists(s.output, ec) && std::filesystem::equivalent(s.output, s.input, ec))
       return fail(exit_input, "refusing to overwrite the input '" + s.input + "'");
   }
-  const bool talk = !s.quiet;
+  r.talk = !s.quiet;
+  return go_on;
+}
 
-  // input
-  Mesh input, reference;
+// Reads the input and the reference (same faces), with their warnings.
+int read_inputs(Cli_run& r)
+{
+  const Settings& s = r.s;
+  const bool talk = r.talk;
+  Mesh &input = r.input, &reference = r.reference;
   std::vector<std::string> warnings;
   const auto warn = [&warnings](const std::string& file) {
     for(const std::string& w : warnings)
@@ -579,6 +581,17 @@ int main(int argc, char** argv)
   }
   if(talk)
     std::cout << s.input << ": " << num_vertices(input) << " vertices, " << num_faces(input) << " faces\n";
+  return go_on;
+}
+
+// Adds the noise asked for to the input, and writes the noisy mesh if asked.
+int add_noise(Cli_run& r)
+{
+  const Settings& s = r.s;
+  const po::variables_map& vm = r.vm;
+  const bool talk = r.talk;
+  Mesh& input = r.input;
+  std::string problem;
   if(vm.count("noise"))
   {
     try
@@ -615,42 +628,23 @@ int main(int argc, char** argv)
         return fail(exit_input, problem);
     }
   }
+  return go_on;
+}
 
-  // denoising
-  const PMP::Intrinsic_path_strategy strategy = s.paths == "square"   ? PMP::Intrinsic_path_strategy::SQUARE_PATTERN
-                                                : s.paths == "direct" ? PMP::Intrinsic_path_strategy::DIRECT
-                                                : s.paths == "graph" ? PMP::Intrinsic_path_strategy::SHORTEST_GRAPH_PATH
-                                                                     : PMP::Intrinsic_path_strategy::GEODESIC;
-  // Always forwarded: the options whose defaults the automatic mode does not
-  // touch (their command-line defaults are the library's), the mode itself,
-  // the stopping rule (when not given: the library's default, on in the
-  // automatic mode unless the iterations are given) and the progress bar.
+// Denoises the input into r.denoised (the intrinsic filter or a classic
+// method) and prints what was done.
+int run_denoising(Cli_run& r)
+{
+  const Settings& s = r.s;
+  const po::variables_map& vm = r.vm;
+  const Method_settings& method = r.method;
+  const bool talk = r.talk;
+  Mesh& denoised = r.denoised;
+  PMP::Intrinsic_denoising_report& report = r.report;
+  std::string problem;
   Progress_bar bar(talk && (s.progress || ::isatty(STDERR_FILENO)));
   auto progress = [&bar](std::size_t done, std::size_t total) { bar(done, total); };
-  const bool stop =
-      vm.count("stop-when-converged") ? s.stop_when_converged == "yes" : !s.fixed && !vm.count("iterations");
-  // the library's default of relax_along_surface: when the automatic selection runs
-  const bool relax = vm.count("relax") ? s.relax == "yes"
-                                       : !s.fixed && stop && !vm.count("iterations") && !vm.count("sigma-spatial") &&
-                                             !vm.count("sigma-range") && !vm.count("radius") &&
-                                             !vm.count("relative-radius") && !vm.count("noise-level");
-  const auto np =
-      CGAL::parameters::vertex_iterations(static_cast<unsigned int>(s.vertex_iterations))
-          .spatial_exponent(s.spatial_exponent)
-          .range_exponent(s.range_exponent)
-          .path_strategy(strategy)
-          .use_step_length(s.step_length)
-          .geodesic_patch_rings(static_cast<unsigned int>(s.patch_rings))
-          .include_self_weight(s.self_weight)
-          .prevent_folds(!s.no_fold_guard)
-          .vertex_update(s.vertex_update == "paper" ? PMP::Vertex_update::PAPER : PMP::Vertex_update::LEAST_SQUARES)
-          .automatic_parameters(!s.fixed)
-          .stop_when_converged(stop)
-          .relax_along_surface(relax)
-          .progress_callback(progress)
-          .selection_sample_faces(static_cast<std::size_t>(s.selection_sample));
-  Mesh denoised = input;
-  Intrinsic_run run{denoised, s, vm, PMP::Intrinsic_denoising_report(), std::string()};
+  denoised = r.input;
   const bool relax_classic = vm.count("relax") && s.relax == "yes"; // with a classic method: off by default
   const auto start = std::chrono::steady_clock::now();
   if(method.method != "intrinsic")
@@ -665,9 +659,10 @@ int main(int argc, char** argv)
     if(s.threads == "1")
       one_thread = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, 1);
 #endif
-    run_intrinsic<0>(run, np);
+    // One concurrency tag only; --threads 1 limits TBB to one thread instead.
+    problem = denoising_support::denoise_with_options<CGAL::Parallel_if_available_tag>(
+        denoised, intrinsic_options(s, vm), CGAL::parameters::progress_callback(progress), &report);
     bar.finish();
-    problem = run.problem;
   }
   if(!problem.empty())
     return fail(exit_input, problem);
@@ -682,9 +677,17 @@ int main(int argc, char** argv)
               << (s.no_fold_guard ? ", no fold guard" : "")
               << (s.vertex_update == "paper" ? "" : ", least-squares vertex update") << ", threads " << s.threads
               << "\n";
-    std::cout << denoising_support::describe(run.report);
+    std::cout << denoising_support::describe(report);
   }
+  r.seconds = seconds;
+  return go_on;
+}
 
+// Prints E_n and E_v of the input and the result against the reference.
+int print_errors(const Cli_run& r)
+{
+  const Settings& s = r.s;
+  const Mesh &input = r.input, &reference = r.reference, &denoised = r.denoised;
   if(!s.reference.empty())
   {
     try
@@ -701,8 +704,19 @@ int main(int argc, char** argv)
       return fail(exit_input, std::string("cannot compare with the reference: ") + e.what());
     }
   }
+  return go_on;
+}
 
-  problem = denoising_support::write_mesh(s.output, denoised, s.input);
+// Writes the result and, if asked, the comparison page.
+int write_outputs(const Cli_run& r)
+{
+  const Settings& s = r.s;
+  const Method_settings& method = r.method;
+  const po::variables_map& vm = r.vm;
+  const bool talk = r.talk;
+  const Mesh &input = r.input, &reference = r.reference, &denoised = r.denoised;
+  const double seconds = r.seconds;
+  std::string problem = denoising_support::write_mesh(s.output, denoised, s.input);
   if(!problem.empty())
     return fail(exit_input, problem);
   if(talk)
@@ -717,4 +731,25 @@ int main(int argc, char** argv)
       std::cout << "report: " << method.report << " (table: " << denoising_support::table_path(method.report) << ")\n";
   }
   return exit_ok;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Cli_run r;
+  int code = parse_command_line(argc, argv, r);
+  if(code == go_on)
+    code = check_usage(r);
+  if(code == go_on)
+    code = read_inputs(r);
+  if(code == go_on)
+    code = add_noise(r);
+  if(code == go_on)
+    code = run_denoising(r);
+  if(code == go_on)
+    code = print_errors(r);
+  if(code == go_on)
+    code = write_outputs(r);
+  return code;
 }

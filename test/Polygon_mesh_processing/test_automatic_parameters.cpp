@@ -428,7 +428,7 @@ TEST(AutomaticParameters, SelectionReusesThePathsOfARadiusRunBefore)
   const auto setup = [&](double radius) {
     D::Setup_defaults d;
     d.relative_radius = radius;
-    return D::make_intrinsic_setup<CGAL::Sequential_tag>(noisy, np, maps, "test",
+    return D::make_intrinsic_setup<CGAL::Sequential_tag>(noisy, D::read_filter_options(np), maps, "test",
                                                          [&d](const D::Flat_mesh&) { return d; });
   };
   EXPECT_LT(D::setup_bytes(setup(6.)), D::Selection_rules::kept_setup_bytes / 4);
@@ -441,7 +441,8 @@ TEST(AutomaticParameters, SelectionReusesThePathsOfARadiusRunBefore)
   ASSERT_TRUE(selection.reuse_paths(3., constrained));
   EXPECT_GT(selection.centroid_distance(), 0.);
   fresh.setup_paths(setup(3.), constrained);
-  const D::Candidate_run a = selection.run_again(0.5, 5), b = fresh.run_again(0.5, 5);
+  const D::Candidate_run a = selection.run_again(selection.kernel_of_width(0.5), 5),
+                         b = fresh.run_again(fresh.kernel_of_width(0.5), 5);
   ASSERT_EQ(a.points.size(), b.points.size());
   for(std::size_t v = 0; v < a.points.size(); ++v)
     for(int i = 0; i < 3; ++i)
@@ -468,7 +469,7 @@ TEST(AutomaticParameters, ConcurrentCandidatesAreTheSequentialOnes)
   const auto setup = [&](const D::Selection_rules::Candidate& c) {
     D::Setup_defaults d;
     d.relative_radius = c.relative_radius;
-    return D::make_intrinsic_setup<CGAL::Sequential_tag>(noisy, np, maps, "test",
+    return D::make_intrinsic_setup<CGAL::Sequential_tag>(noisy, D::read_filter_options(np), maps, "test",
                                                          [&d](const D::Flat_mesh&) { return d; });
   };
   constexpr std::size_t n = D::Selection_rules::number_of_candidates;

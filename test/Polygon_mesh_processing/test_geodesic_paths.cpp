@@ -735,8 +735,10 @@ TEST(GeodesicDenoising, SurfaceMeshAndPolyhedronAgree)
   // the same forests
   const D::Mesh_maps<Mesh, decltype(np)> msm(sm, np);
   const D::Mesh_maps<Polyhedron, decltype(np)> mpoly(poly, np);
-  const D::Intrinsic_setup ssm = D::make_intrinsic_setup<CGAL::Sequential_tag>(sm, np, msm, "test");
-  const D::Intrinsic_setup spoly = D::make_intrinsic_setup<CGAL::Sequential_tag>(poly, np, mpoly, "test");
+  const D::Intrinsic_setup ssm =
+      D::make_intrinsic_setup<CGAL::Sequential_tag>(sm, D::read_filter_options(np), msm, "test");
+  const D::Intrinsic_setup spoly =
+      D::make_intrinsic_setup<CGAL::Sequential_tag>(poly, D::read_filter_options(np), mpoly, "test");
   EXPECT_EQ(ssm.paths.offsets, spoly.paths.offsets);
   EXPECT_EQ(ssm.paths.face, spoly.paths.face);
   EXPECT_EQ(ssm.paths.parent, spoly.paths.parent);

@@ -286,8 +286,8 @@ TEST(IntrinsicFilter, DenoiserOnTheEngineEqualsTheDirectFormula)
   // Algorithm 1 again with the reference pass
   const D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters> maps(reference,
                                                                             CGAL::parameters::default_values());
-  D::Intrinsic_setup s =
-      D::make_intrinsic_setup<CGAL::Sequential_tag>(reference, CGAL::parameters::default_values(), maps, "test");
+  D::Intrinsic_setup s = D::make_intrinsic_setup<CGAL::Sequential_tag>(
+      reference, D::read_filter_options(CGAL::parameters::default_values()), maps, "test");
   D::Face_data fd = s.input_faces;
   std::vector<D::Vec3> filtered, c, nx;
   for(unsigned it = 0; it < k; ++it)

@@ -149,12 +149,10 @@ void bilateral_mesh_denoising(TriangleMesh& tmesh, const NamedParameters& np = p
   static const char* fname = "bilateral_mesh_denoising()";
   if(faces(tmesh).empty())
     return;
-  const double relative_sigma_c = choose_parameter(get_parameter(np, internal_np::sigma_spatial), 1.);
+  const D::Classic_sigmas sigmas = D::read_classic_sigmas(np, fname, 1., 1.);
+  const double relative_sigma_c = sigmas.spatial, relative_sigma_s = sigmas.range;
   const bool adaptive = is_default_parameter<NamedParameters, internal_np::sigma_range_t>::value;
-  const double relative_sigma_s = choose_parameter(get_parameter(np, internal_np::sigma_range), 1.);
   const unsigned int iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 5u);
-  D::require_positive(relative_sigma_c, fname, "sigma_spatial");
-  D::require_positive(relative_sigma_s, fname, "sigma_range");
 
   D::Classic_setup<TriangleMesh, NamedParameters> setup(tmesh, np, fname);
   const double l = D::mean_edge_length(setup.mesh);

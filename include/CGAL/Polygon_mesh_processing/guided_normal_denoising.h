@@ -99,15 +99,11 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
 void guided_normal_denoising(TriangleMesh& tmesh, const NamedParameters& np = parameters::default_values())
 {
   namespace D = internal::Denoising;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
   static const char* fname = "guided_normal_denoising()";
   if(faces(tmesh).empty())
     return;
-  const double relative_sigma_s = choose_parameter(get_parameter(np, internal_np::sigma_spatial), 1.);
-  const double sigma_r = choose_parameter(get_parameter(np, internal_np::sigma_range), 0.35);
-  D::require_positive(relative_sigma_s, fname, "sigma_spatial");
-  D::require_positive(sigma_r, fname, "sigma_range");
+  const D::Classic_sigmas sigmas = D::read_classic_sigmas(np, fname, 1., 0.35);
+  const double relative_sigma_s = sigmas.spatial, sigma_r = sigmas.range;
 
   D::Classic_setup<TriangleMesh, NamedParameters> setup(tmesh, np, fname);
   D::Face_data input;

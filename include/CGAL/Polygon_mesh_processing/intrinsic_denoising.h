@@ -158,7 +158,7 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
   if(faces(tmesh).empty())
     return;
   const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
-  const D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, np, maps, fname);
+  const D::Intrinsic_setup s = D::make_intrinsic_setup<ConcurrencyTag>(tmesh, D::read_filter_options(np), maps, fname);
   std::vector<D::Vec3> out;
   D::intrinsic_filter_pass<ConcurrencyTag>(s.paths, s.input_faces.normals, s.input_faces.areas, s.kernel, out);
   maps.write_face_vectors(tmesh, s.mesh.in_input_order(out), filtered_normals);
@@ -390,13 +390,8 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
 Intrinsic_denoising_report intrinsic_denoising(TriangleMesh& tmesh,
                                                const NamedParameters& np = parameters::default_values())
 {
-  if(faces(tmesh).empty())
-    return Intrinsic_denoising_report();
-  internal::Denoising::Intrinsic_denoiser<ConcurrencyTag, TriangleMesh, NamedParameters> denoiser(tmesh, np);
-  const internal::Denoising::Candidate_run result =
-      denoiser.uses_automatic_selection() ? denoiser.select_automatically() : denoiser.run_with_rules();
-  denoiser.write_result(tmesh, result);
-  return denoiser.report();
+  return internal::Denoising::intrinsic_denoising_with_options<ConcurrencyTag>(
+      tmesh, internal::Denoising::read_intrinsic_options(np), np);
 }
 
 } // namespace Polygon_mesh_processing

@@ -138,12 +138,13 @@ void intrinsic_filter(const TriangleMesh& tmesh, const SignalMap& signal, Filter
     return;
 
   const D::Mesh_maps<TriangleMesh, NamedParameters> maps(tmesh, np);
-  const D::Intrinsic_kernel kernel = D::read_kernel(np, fname);
+  const D::Filter_options options = D::read_filter_options(np);
+  const D::Intrinsic_kernel kernel = D::filter_kernel(options, fname);
   const unsigned int iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1u);
   const bool unit_length = choose_parameter(get_parameter(np, internal_np::unit_length_result), false);
-  const Intrinsic_path_strategy strategy = D::read_strategy(
-      np, on_faces ? Intrinsic_path_strategy::SQUARE_PATTERN : Intrinsic_path_strategy::SHORTEST_GRAPH_PATH);
-  const bool step_length = D::read_step_length(np);
+  const Intrinsic_path_strategy strategy = options.path_strategy.value_or(
+      on_faces ? Intrinsic_path_strategy::SQUARE_PATTERN : Intrinsic_path_strategy::SHORTEST_GRAPH_PATH);
+  const bool step_length = options.use_step_length;
 
   const D::Flat_mesh m = maps.flat(tmesh, fname);
   D::Face_data fd;
@@ -152,7 +153,7 @@ void intrinsic_filter(const TriangleMesh& tmesh, const SignalMap& signal, Filter
   auto run = [&](const auto& keys, std::size_t count, const auto& index, const std::vector<D::Vec3>& positions,
                  const std::vector<D::Vec3>& normals, const std::vector<double>& measure, const auto& adjacency,
                  double unit) {
-    const double radius = D::read_radius(np, fname, unit, D::Intrinsic_defaults::relative_radius);
+    const double radius = D::filter_radius(options, fname, unit, D::Intrinsic_defaults::relative_radius);
     // on faces, the search that visits the faces around a vertex once (same lists)
     D::Csr neighbors;
     if constexpr(on_faces)
@@ -160,7 +161,7 @@ void intrinsic_filter(const TriangleMesh& tmesh, const SignalMap& signal, Filter
     else
       neighbors = D::geometric_neighborhoods<ConcurrencyTag>(positions, adjacency, radius);
     const D::Path_forest paths =
-        D::make_paths<ConcurrencyTag>(np, strategy, step_length, unit, positions, adjacency, neighbors,
+        D::make_paths<ConcurrencyTag>(options, strategy, step_length, unit, positions, adjacency, neighbors,
                                       on_faces ? &m : nullptr, on_faces ? &fd : nullptr, fname);
     D::Flat_signal current = D::read_signal(keys, count, index, signal, fname, "signal"), next, phi_store, psi_store;
     const D::Flat_signal* phi_fixed =

@@ -170,11 +170,9 @@ void non_iterative_denoising(TriangleMesh& tmesh, const NamedParameters& np = pa
   static const char* fname = "non_iterative_denoising()";
   if(faces(tmesh).empty())
     return;
-  const double relative_sigma_f = choose_parameter(get_parameter(np, internal_np::sigma_spatial), 2.);
-  const double relative_sigma_g = choose_parameter(get_parameter(np, internal_np::sigma_range), 0.5);
+  const D::Classic_sigmas sigmas = D::read_classic_sigmas(np, fname, 2., 0.5);
+  const double relative_sigma_f = sigmas.spatial, relative_sigma_g = sigmas.range;
   const unsigned int iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1u);
-  D::require_positive(relative_sigma_f, fname, "sigma_spatial");
-  D::require_positive(relative_sigma_g, fname, "sigma_range");
 
   D::Classic_setup<TriangleMesh, NamedParameters> setup(tmesh, np, fname);
   const double l = D::mean_edge_length(setup.mesh);

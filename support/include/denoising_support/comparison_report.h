@@ -211,6 +211,57 @@ inline std::string check_report_files()
 #endif
 }
 
+namespace internal {
+
+// The page's data (JSON: meshes, face lists, the table) of `report`, and the
+// table as CSV in `csv`.
+inline std::string report_json(const Report& report, std::string& csv_text)
+{
+  // the JSON data: identical triangle lists are stored once
+  std::vector<const std::vector<std::uint32_t>*> lists;
+  std::ostringstream meshes;
+  for(std::size_t i = 0; i < report.entries.size(); ++i)
+  {
+    const Entry& e = report.entries[i];
+    std::size_t list = 0;
+    while(list < lists.size() && *lists[list] != e.triangles)
+      ++list;
+    if(list == lists.size())
+      lists.push_back(&e.triangles);
+    const bool emptied = int(i) == report.debug_empty_entry;
+    meshes << (i ? ",\n" : "") << "{\"label\":" << quote(e.label) << ",\"positions\":\""
+           << (emptied ? std::string() : base64(e.positions.data(), e.positions.size() * sizeof(float)))
+           << "\",\"faces\":" << list << ",\"errors\":"
+           << (e.face_errors.empty() ? std::string("null") : "\"" + centidegrees(e.face_errors) + "\"") << "}";
+  }
+  std::ostringstream data;
+  data << "{\"title\":" << quote(report.title) << ",\"heatMax\":" << number(report.heat_max) << ",\"view\":{\"dir\":["
+       << report.view_dir[0] << "," << report.view_dir[1] << "," << report.view_dir[2] << "],\"up\":["
+       << report.view_up[0] << "," << report.view_up[1] << "," << report.view_up[2] << "]},\n\"faceLists\":[";
+  for(std::size_t l = 0; l < lists.size(); ++l)
+    data << (l ? ",\n\"" : "\"") << base64(lists[l]->data(), lists[l]->size() * sizeof(std::uint32_t)) << "\"";
+  data << "],\n\"meshes\":[" << meshes.str() << "],\n\"table\":[";
+  std::ostringstream csv;
+  csv << "label,E_n,E_v,seconds\n";
+  for(std::size_t i = 0; i < report.entries.size(); ++i)
+  {
+    const Entry& e = report.entries[i];
+    data << (i ? ",\n" : "") << "{\"label\":" << quote(e.label) << ",\"E_n\":" << number(e.En)
+         << ",\"E_v\":" << number(e.Ev) << ",\"seconds\":" << number(e.seconds) << "}";
+    std::string label = e.label;
+    for(char& c : label)
+      if(c == ',' || c == '\n')
+        c = ' ';
+    auto cell = [](double x) { return std::isfinite(x) ? number(x) : std::string(); };
+    csv << label << "," << cell(e.En) << "," << cell(e.Ev) << "," << cell(e.seconds) << "\n";
+  }
+  data << "]}";
+  csv_text = csv.str();
+  return data.str();
+}
+
+} // namespace internal
+
 // Writes the page to `html_path` and the table to table_path(html_path).
 // Returns an empty string on success, else a one-line error.
 inline std::string write_report(const std::string& html_path, const Report& report)
@@ -230,52 +281,11 @@ inline std::string write_report(const std::string& html_path, const Report& repo
   if(!internal::read_file(three_path, three))
     return "report: three.js build file " + three_path + " is missing: run `npm ci` in tools/render";
 
-  // the JSON data: identical triangle lists are stored once
-  std::vector<const std::vector<std::uint32_t>*> lists;
-  std::ostringstream meshes;
-  for(std::size_t i = 0; i < report.entries.size(); ++i)
-  {
-    const Entry& e = report.entries[i];
-    std::size_t list = 0;
-    while(list < lists.size() && *lists[list] != e.triangles)
-      ++list;
-    if(list == lists.size())
-      lists.push_back(&e.triangles);
-    const bool emptied = int(i) == report.debug_empty_entry;
-    meshes << (i ? ",\n" : "") << "{\"label\":" << internal::quote(e.label) << ",\"positions\":\""
-           << (emptied ? std::string() : internal::base64(e.positions.data(), e.positions.size() * sizeof(float)))
-           << "\",\"faces\":" << list << ",\"errors\":"
-           << (e.face_errors.empty() ? std::string("null") : "\"" + internal::centidegrees(e.face_errors) + "\"")
-           << "}";
-  }
-  std::ostringstream data;
-  data << "{\"title\":" << internal::quote(report.title) << ",\"heatMax\":" << internal::number(report.heat_max)
-       << ",\"view\":{\"dir\":[" << report.view_dir[0] << "," << report.view_dir[1] << "," << report.view_dir[2]
-       << "],\"up\":[" << report.view_up[0] << "," << report.view_up[1] << "," << report.view_up[2]
-       << "]},\n\"faceLists\":[";
-  for(std::size_t l = 0; l < lists.size(); ++l)
-    data << (l ? ",\n\"" : "\"") << internal::base64(lists[l]->data(), lists[l]->size() * sizeof(std::uint32_t))
-         << "\"";
-  data << "],\n\"meshes\":[" << meshes.str() << "],\n\"table\":[";
-  std::ostringstream csv;
-  csv << "label,E_n,E_v,seconds\n";
-  for(std::size_t i = 0; i < report.entries.size(); ++i)
-  {
-    const Entry& e = report.entries[i];
-    data << (i ? ",\n" : "") << "{\"label\":" << internal::quote(e.label) << ",\"E_n\":" << internal::number(e.En)
-         << ",\"E_v\":" << internal::number(e.Ev) << ",\"seconds\":" << internal::number(e.seconds) << "}";
-    std::string label = e.label;
-    for(char& c : label)
-      if(c == ',' || c == '\n')
-        c = ' ';
-    auto cell = [](double x) { return std::isfinite(x) ? internal::number(x) : std::string(); };
-    csv << label << "," << cell(e.En) << "," << cell(e.Ev) << "," << cell(e.seconds) << "\n";
-  }
-  data << "]}";
+  std::string csv;
+  const std::string data_text = internal::report_json(report, csv);
 
   // paste the parts into the template's placeholders, found in the template
   // itself and replaced from the last one back, so pasted text is never searched
-  const std::string data_text = data.str();
   const std::pair<const char*, const std::string*> parts[] = {
       {"@REPORT_DATA@", &data_text}, {"@THREE_MODULE@", &three}, {"@VIEWER_JS@", &viewer}};
   std::vector<std::pair<std::size_t, std::size_t>> at; // (position, part)
@@ -296,7 +306,7 @@ inline std::string write_report(const std::string& html_path, const Report& repo
   if(!out.flush())
     return "report: cannot write " + html_path;
   std::ofstream table(table_path(html_path));
-  table << csv.str();
+  table << csv;
   if(!table.flush())
     return "report: cannot write " + table_path(html_path);
   return std::string();

@@ -329,25 +329,13 @@ inline std::size_t drop_small_components(std::vector<std::array<std::size_t, 3>>
   return dropped;
 }
 
-} // namespace internal
-
-// Scans `tmesh` (a triangle mesh whose points are Epick points) with camera `c`.
-template <typename TriangleMesh>
-Depth_scan_result simulate_depth_scan(const TriangleMesh& tmesh, const Depth_camera& c,
-                                      const Depth_scan_options& o = Depth_scan_options())
+// Marks the pixels of `im` that keep their depth (im.valid) and counts them
+// in `result`: a ray that hit, not at a grazing angle (o.grazing_cosine) nor
+// at a depth discontinuity (a 4-neighbour missing or at a depth jump of more
+// than o.edge_factor footprints; `f`: the focal length in pixels).
+inline void mark_valid_pixels(Depth_image& im, const Depth_camera& c, const Depth_scan_options& o, double f,
+                              Depth_scan_result& result)
 {
-  if(c.width < 2 || c.height < 2)
-    throw std::invalid_argument("simulate_depth_scan(): the image needs at least 2 x 2 pixels.");
-  const Camera_frame frame(c);
-  const double f = frame.f;
-  Depth_scan_result result;
-  result.camera_centre = c.eye;
-  result.forward = frame.forward;
-  result.pixels = std::size_t(c.width) * c.height;
-
-  internal::Depth_image im = internal::cast_rays(tmesh, c, frame);
-  // dropouts: grazing angles, then depth discontinuities (a 4-neighbour
-  // missing or at a depth jump of more than edge_factor footprints)
   const std::size_t n = result.pixels, w = std::size_t(c.width);
   im.valid.assign(n, 0);
   for(std::size_t k = 0; k < n; ++k)
@@ -376,6 +364,28 @@ Depth_scan_result simulate_depth_scan(const TriangleMesh& tmesh, const Depth_cam
     else
       im.valid[k] = 1;
   }
+}
+
+} // namespace internal
+
+// Scans `tmesh` (a triangle mesh whose points are Epick points) with camera `c`.
+template <typename TriangleMesh>
+Depth_scan_result simulate_depth_scan(const TriangleMesh& tmesh, const Depth_camera& c,
+                                      const Depth_scan_options& o = Depth_scan_options())
+{
+  if(c.width < 2 || c.height < 2)
+    throw std::invalid_argument("simulate_depth_scan(): the image needs at least 2 x 2 pixels.");
+  const Camera_frame frame(c);
+  const double f = frame.f;
+  Depth_scan_result result;
+  result.camera_centre = c.eye;
+  result.forward = frame.forward;
+  result.pixels = std::size_t(c.width) * c.height;
+
+  internal::Depth_image im = internal::cast_rays(tmesh, c, frame);
+  // dropouts: grazing angles, then depth discontinuities
+  internal::mark_valid_pixels(im, c, o, f, result);
+  const std::size_t n = result.pixels, w = std::size_t(c.width);
 
   // noisy depth through the disparity domain
   const double baseline = o.baseline_ratio * std::sqrt(CGAL::squared_distance(c.eye, c.target));

@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 
 #include <denoising_support/mesh_readers.h>
+#include <denoising_support/option_names.h>
 
 #include <CGAL/IO/OFF/File_scanner_OFF.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -465,23 +466,11 @@ inline std::string read_plain_off_body(std::istream& in, std::size_t nv, std::si
 // indices must be in range; then soup_to_mesh(). Lines after the faces the
 // header announces are ignored, and counted in `warnings` (text OFF). Returns
 // "" or a one-line message.
-inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh,
-                            std::vector<std::string>* warnings = nullptr)
+// The `nv` vertices of OFF data read by `scanner` from `in` (homogeneous
+// coordinates divided out, normals, colours and textures skipped), checked.
+inline std::string read_off_vertices(CGAL::File_scanner_OFF& scanner, std::istream& in, std::size_t nv,
+                                     std::vector<K::Point_3>& points)
 {
-  CGAL::File_scanner_OFF scanner(in, false);
-  if(in.fail())
-    return "not an OFF file (bad or missing header)";
-  const std::size_t nv = scanner.size_of_vertices(), nf = scanner.size_of_facets();
-  if(nv > byte_count || nf > byte_count)
-    return "the OFF header announces " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
-           " faces, more than " + std::to_string(byte_count) + " bytes can hold";
-  if(!scanner.binary() && !scanner.has_normals() && !scanner.has_colors() && !scanner.has_textures() &&
-     !scanner.is_homogeneous() && scanner.dimension() == 3)
-    return read_plain_off_body(in, nv, nf, mesh, warnings);
-  std::vector<K::Point_3> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  points.reserve(nv);
-  polygons.reserve(nf);
   for(std::size_t i = 0; i < nv; ++i)
   {
     double x = 0, y = 0, z = 0, w = 1;
@@ -511,6 +500,14 @@ inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh
       return "vertex " + std::to_string(i) + " has a NaN or infinite coordinate";
     points.emplace_back(x, y, z);
   }
+  return std::string();
+}
+
+// The `nf` faces of OFF data read by `scanner` from `in`, their indices
+// checked against `nv` vertices.
+inline std::string read_off_faces(CGAL::File_scanner_OFF& scanner, std::istream& in, std::size_t nv, std::size_t nf,
+                                  std::vector<std::vector<std::size_t>>& polygons)
+{
   for(std::size_t i = 0; i < nf; ++i)
   {
     std::vector<std::size_t> polygon;
@@ -548,22 +545,51 @@ inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh
     }
     polygons.push_back(std::move(polygon));
   }
+  return std::string();
+}
+
+// Counts the non-empty lines left in `in` after the `nf` faces of text OFF
+// data, and says so in `warnings` if there are any.
+inline void warn_of_extra_off_lines(std::istream& in, std::size_t nf, std::vector<std::string>& warnings)
+{
+  // more face lines than the header announces: read as the header says, but said
+  std::size_t extra = 0;
+  std::string line;
+  while(std::getline(in, line))
+  {
+    line = line.substr(0, line.find('#'));
+    if(line.find_first_not_of(" \t\r") != std::string::npos)
+      ++extra;
+  }
+  if(extra > 0)
+    warnings.push_back(off_text::extra_lines_warning(extra, nf));
+}
+
+inline std::string read_off(std::istream& in, std::size_t byte_count, Mesh& mesh,
+                            std::vector<std::string>* warnings = nullptr)
+{
+  CGAL::File_scanner_OFF scanner(in, false);
+  if(in.fail())
+    return "not an OFF file (bad or missing header)";
+  const std::size_t nv = scanner.size_of_vertices(), nf = scanner.size_of_facets();
+  if(nv > byte_count || nf > byte_count)
+    return "the OFF header announces " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+           " faces, more than " + std::to_string(byte_count) + " bytes can hold";
+  if(!scanner.binary() && !scanner.has_normals() && !scanner.has_colors() && !scanner.has_textures() &&
+     !scanner.is_homogeneous() && scanner.dimension() == 3)
+    return read_plain_off_body(in, nv, nf, mesh, warnings);
+  std::vector<K::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  points.reserve(nv);
+  polygons.reserve(nf);
+  if(std::string problem = read_off_vertices(scanner, in, nv, points); !problem.empty())
+    return problem;
+  if(std::string problem = read_off_faces(scanner, in, nv, nf, polygons); !problem.empty())
+    return problem;
   if(!in && !in.eof())
     return "malformed OFF data";
   if(!scanner.binary() && warnings)
-  {
-    // more face lines than the header announces: read as the header says, but said
-    std::size_t extra = 0;
-    std::string line;
-    while(std::getline(in, line))
-    {
-      line = line.substr(0, line.find('#'));
-      if(line.find_first_not_of(" \t\r") != std::string::npos)
-        ++extra;
-    }
-    if(extra > 0)
-      warnings->push_back(off_text::extra_lines_warning(extra, nf));
-  }
+    warn_of_extra_off_lines(in, nf, *warnings);
   Soup soup{std::move(points), std::move(polygons)};
   return soup_to_mesh(soup, mesh);
 }
@@ -638,6 +664,31 @@ std::string denoise(Mesh& mesh, const NamedParameters& np = CGAL::parameters::de
   {
     const CGAL::Polygon_mesh_processing::Intrinsic_denoising_report r =
         CGAL::Polygon_mesh_processing::intrinsic_denoising<ConcurrencyTag>(mesh, np);
+    if(report != nullptr)
+      *report = r;
+  }
+  catch(const std::exception& e)
+  {
+    return e.what();
+  }
+  return std::string();
+}
+
+// The same with the options `options` set at run time (the command-line
+// tool's and the Python module's path: one instantiation for every
+// combination of options) and the maps and progress callback of `np`.
+template <typename ConcurrencyTag = CGAL::Sequential_tag,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+std::string denoise_with_options(Mesh& mesh,
+                                 const CGAL::Polygon_mesh_processing::internal::Denoising::Intrinsic_options& options,
+                                 const NamedParameters& np = CGAL::parameters::default_values(),
+                                 CGAL::Polygon_mesh_processing::Intrinsic_denoising_report* report = nullptr)
+{
+  try
+  {
+    const CGAL::Polygon_mesh_processing::Intrinsic_denoising_report r =
+        CGAL::Polygon_mesh_processing::internal::Denoising::intrinsic_denoising_with_options<ConcurrencyTag>(
+            mesh, options, np);
     if(report != nullptr)
       *report = r;
   }
@@ -724,13 +775,8 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
   out << "sigma_s = " << r.sigma_spatial << ", sigma_r = " << r.sigma_range << "\n";
   out << "r = " << r.neighbor_radius << " (" << r.relative_neighbor_radius << " d), v_iter = " << r.vertex_iterations
       << "\n";
-  out << "iterations: " << r.iterations << " of at most " << r.maximum_iterations << ", stopped: "
-      << (r.stop_reason == Reason::NOISE_LEVEL_REACHED   ? "displacement reached the noise level"
-          : r.stop_reason == Reason::CONVERGED           ? "converged"
-          : r.stop_reason == Reason::RESIDUAL_CORRELATED ? "the residual became correlated across edges"
-          : r.stop_reason == Reason::SELF_CHECK          ? "the self-check chose the number of iterations or the radius"
-          : r.stop_reason == Reason::SECOND_PASS ? "the second pass read the change as shape, not noise: input kept"
-                                                 : "iteration limit");
+  out << "iterations: " << r.iterations << " of at most " << r.maximum_iterations
+      << ", stopped: " << name_of(stop_reason_names, r.stop_reason).description;
   if(r.stop_reason != Reason::ITERATION_LIMIT || r.displacement > 0.)
     out << " (RMS displacement " << r.displacement << " x mean edge length)";
   out << "\n";

@@ -394,21 +394,26 @@ struct Ply_body
   int format; // 0 ASCII, 1 binary little endian, 2 binary big endian
   std::string fail;
 
-  bool next(Ply_type t, double& x)
+  bool next(Ply_type t, double& x) { return format == 0 ? next_ascii(x) : next_binary(t, x); }
+
+  // The next word of an ASCII body as a number.
+  bool next_ascii(double& x)
   {
-    if(format == 0)
-    {
-      while(pos < data.size() && std::isspace(static_cast<unsigned char>(data[pos])))
-        ++pos;
-      const std::size_t b = pos;
-      while(pos < data.size() && !std::isspace(static_cast<unsigned char>(data[pos])))
-        ++pos;
-      if(b == pos)
-        return (fail = "truncated"), false;
-      if(!to_double(data.substr(b, pos - b), x))
-        return (fail = "not a number: '" + data.substr(b, (std::min)(pos - b, std::size_t(20))) + "'"), false;
-      return true;
-    }
+    while(pos < data.size() && std::isspace(static_cast<unsigned char>(data[pos])))
+      ++pos;
+    const std::size_t b = pos;
+    while(pos < data.size() && !std::isspace(static_cast<unsigned char>(data[pos])))
+      ++pos;
+    if(b == pos)
+      return (fail = "truncated"), false;
+    if(!to_double(data.substr(b, pos - b), x))
+      return (fail = "not a number: '" + data.substr(b, (std::min)(pos - b, std::size_t(20))) + "'"), false;
+    return true;
+  }
+
+  // The next value of type `t` of a binary body, in its byte order.
+  bool next_binary(Ply_type t, double& x)
+  {
     const std::size_t n = ply_size(t);
     if(data.size() - pos < n)
       return (fail = "truncated"), false;
@@ -425,67 +430,165 @@ struct Ply_body
     switch(t)
     {
     case Ply_type::INT8:
-    {
-      std::int8_t v;
-      std::memcpy(&v, b, 1);
-      x = v;
-      break;
-    }
+      return (x = value_as<std::int8_t>(b)), true;
     case Ply_type::UINT8:
-    {
-      std::uint8_t v;
-      std::memcpy(&v, b, 1);
-      x = v;
-      break;
-    }
+      return (x = value_as<std::uint8_t>(b)), true;
     case Ply_type::INT16:
-    {
-      std::int16_t v;
-      std::memcpy(&v, b, 2);
-      x = v;
-      break;
-    }
+      return (x = value_as<std::int16_t>(b)), true;
     case Ply_type::UINT16:
-    {
-      std::uint16_t v;
-      std::memcpy(&v, b, 2);
-      x = v;
-      break;
-    }
+      return (x = value_as<std::uint16_t>(b)), true;
     case Ply_type::INT32:
-    {
-      std::int32_t v;
-      std::memcpy(&v, b, 4);
-      x = v;
-      break;
-    }
+      return (x = value_as<std::int32_t>(b)), true;
     case Ply_type::UINT32:
-    {
-      std::uint32_t v;
-      std::memcpy(&v, b, 4);
-      x = v;
-      break;
-    }
+      return (x = value_as<std::uint32_t>(b)), true;
     case Ply_type::FLOAT32:
-    {
-      float v;
-      std::memcpy(&v, b, 4);
-      x = v;
-      break;
-    }
+      return (x = value_as<float>(b)), true;
     case Ply_type::FLOAT64:
-    {
-      double v;
-      std::memcpy(&v, b, 8);
-      x = v;
-      break;
-    }
+      return (x = value_as<double>(b)), true;
     default:
       return (fail = "unknown type"), false;
     }
-    return true;
+  }
+
+  // The value of type T whose bytes (host order) start at `b`.
+  template <typename T>
+  static double value_as(const unsigned char* b)
+  {
+    T v;
+    std::memcpy(&v, b, sizeof(T));
+    return double(v);
   }
 };
+
+// The header of the PLY text `data` up to `end` (where end_header starts),
+// whose body starts at `body`: the format (0 ASCII, 1 little-endian, 2
+// big-endian) and the elements with their properties. A problem, or empty.
+inline std::string read_ply_header(const std::string& data, std::size_t end, std::size_t body, int& format,
+                                   std::vector<Ply_element>& elements)
+{
+  std::string problem;
+  for_each_line(data.substr(0, end), [&](std::size_t number, const std::string& text) {
+    const std::vector<std::string> w = words(text);
+    const std::string at = "header line " + std::to_string(number) + ": ";
+    if(w.empty() || w[0] == "comment" || w[0] == "obj_info" || w[0] == "ply")
+      return true;
+    if(w[0] == "format")
+    {
+      if(w.size() < 2 || (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian"))
+        problem = at + "unknown format";
+      else
+        format = w[1] == "ascii" ? 0 : w[1] == "binary_little_endian" ? 1 : 2;
+    }
+    else if(w[0] == "element")
+    {
+      long long count = -1;
+      if(w.size() != 3 || !to_integer(w[2], count) || count < 0)
+        problem = at + "malformed element";
+      else if((unsigned long long)count > data.size() - body)
+        problem = at + "element " + w[1] + " announces " + w[2] + " items, more than the " +
+                  std::to_string(data.size() - body) + " bytes of data can hold";
+      else
+        elements.push_back({w[1], std::size_t(count), {}});
+    }
+    else if(w[0] == "property")
+    {
+      Ply_property p;
+      if(elements.empty())
+        problem = at + "property before any element";
+      else if(w.size() == 3 && (p.type = ply_type(w[1])) != Ply_type::NONE)
+        p.name = w[2];
+      else if(w.size() == 5 && w[1] == "list" && (p.count_type = ply_type(w[2])) != Ply_type::NONE &&
+              (p.type = ply_type(w[3])) != Ply_type::NONE)
+        p.name = w[4];
+      else
+        problem = at + "malformed property";
+      if(problem.empty())
+        elements.back().properties.push_back(p);
+    }
+    else
+      problem = at + "unknown keyword '" + w[0] + "'";
+    return problem.empty();
+  });
+  if(!problem.empty())
+    return problem;
+  if(format < 0)
+    return "the PLY header has no format line";
+  return std::string();
+}
+
+// The items of element `e` from `reader` (the body of `data`, a file of
+// `byte_count` bytes): vertices and faces go to `soup`, other elements are
+// skipped. A problem, or empty.
+inline std::string read_ply_element(Ply_body& reader, const Ply_element& e, const std::string& data,
+                                    std::size_t byte_count, Soup& soup)
+{
+  const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
+  int xyz[3] = {-1, -1, -1};
+  int indices = -1;
+  for(std::size_t k = 0; k < e.properties.size(); ++k)
+  {
+    const Ply_property& p = e.properties[k];
+    for(int c = 0; c < 3; ++c)
+      if(is_vertex && p.count_type == Ply_type::NONE && p.name == std::string(1, char('x' + c)))
+        xyz[c] = int(k);
+    if(is_face && p.count_type != Ply_type::NONE && (p.name == "vertex_indices" || p.name == "vertex_index"))
+      indices = int(k);
+  }
+  if(is_vertex && (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0))
+    return "the vertex element has no x, y and z";
+  if(is_face && indices < 0)
+    return "the face element has no vertex_indices list";
+  for(std::size_t i = 0; i < e.count; ++i)
+  {
+    double c[3] = {0., 0., 0.};
+    std::vector<std::size_t> polygon;
+    const std::string item = e.name + " " + std::to_string(i);
+    for(std::size_t k = 0; k < e.properties.size(); ++k)
+    {
+      const Ply_property& p = e.properties[k];
+      double x = 0.;
+      if(p.count_type == Ply_type::NONE)
+      {
+        if(!reader.next(p.type, x))
+          return item + ": " + reader.fail;
+        for(int d = 0; d < 3; ++d)
+          if(int(k) == xyz[d])
+            c[d] = x;
+        continue;
+      }
+      double count = 0.;
+      if(!reader.next(p.count_type, count))
+        return item + ": " + reader.fail;
+      // each entry takes at least one byte: a count beyond the data left is malformed
+      if(!(count >= 0.) || count != std::floor(count) || count > double(data.size() - reader.pos))
+        return item + ": malformed list size";
+      for(std::size_t j = 0; j < std::size_t(count); ++j)
+      {
+        if(!reader.next(p.type, x))
+          return item + ": " + reader.fail;
+        if(int(k) == indices)
+        {
+          if(!(x >= 0.) || x != std::floor(x) || x >= double(byte_count))
+            return item + ": vertex index " + std::to_string(x) + " out of range";
+          polygon.push_back(std::size_t(x));
+        }
+      }
+    }
+    if(is_vertex)
+    {
+      if(!finite(c[0], c[1], c[2]))
+        return item + ": a NaN or infinite coordinate";
+      soup.points.emplace_back(c[0], c[1], c[2]);
+    }
+    if(is_face)
+    {
+      if(polygon.size() < 3)
+        return item + ": fewer than three vertices";
+      soup.polygons.push_back(std::move(polygon));
+    }
+  }
+  return std::string();
+}
 
 } // namespace readers
 
@@ -510,121 +613,15 @@ inline std::string read_ply_soup(std::istream& in, std::size_t byte_count, Soup&
   ++body;
   int format = -1;
   std::vector<R::Ply_element> elements;
-  std::string problem;
-  R::for_each_line(data.substr(0, end), [&](std::size_t number, const std::string& text) {
-    const std::vector<std::string> w = R::words(text);
-    const std::string at = "header line " + std::to_string(number) + ": ";
-    if(w.empty() || w[0] == "comment" || w[0] == "obj_info" || w[0] == "ply")
-      return true;
-    if(w[0] == "format")
-    {
-      if(w.size() < 2 || (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian"))
-        problem = at + "unknown format";
-      else
-        format = w[1] == "ascii" ? 0 : w[1] == "binary_little_endian" ? 1 : 2;
-    }
-    else if(w[0] == "element")
-    {
-      long long count = -1;
-      if(w.size() != 3 || !R::to_integer(w[2], count) || count < 0)
-        problem = at + "malformed element";
-      else if((unsigned long long)count > data.size() - body)
-        problem = at + "element " + w[1] + " announces " + w[2] + " items, more than the " +
-                  std::to_string(data.size() - body) + " bytes of data can hold";
-      else
-        elements.push_back({w[1], std::size_t(count), {}});
-    }
-    else if(w[0] == "property")
-    {
-      R::Ply_property p;
-      if(elements.empty())
-        problem = at + "property before any element";
-      else if(w.size() == 3 && (p.type = R::ply_type(w[1])) != R::Ply_type::NONE)
-        p.name = w[2];
-      else if(w.size() == 5 && w[1] == "list" && (p.count_type = R::ply_type(w[2])) != R::Ply_type::NONE &&
-              (p.type = R::ply_type(w[3])) != R::Ply_type::NONE)
-        p.name = w[4];
-      else
-        problem = at + "malformed property";
-      if(problem.empty())
-        elements.back().properties.push_back(p);
-    }
-    else
-      problem = at + "unknown keyword '" + w[0] + "'";
-    return problem.empty();
-  });
+  std::string problem = R::read_ply_header(data, end, body, format, elements);
   if(!problem.empty())
     return problem;
-  if(format < 0)
-    return "the PLY header has no format line";
   R::Ply_body reader{data, body, format, std::string()};
   for(const R::Ply_element& e : elements)
   {
-    const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
-    int xyz[3] = {-1, -1, -1};
-    int indices = -1;
-    for(std::size_t k = 0; k < e.properties.size(); ++k)
-    {
-      const R::Ply_property& p = e.properties[k];
-      for(int c = 0; c < 3; ++c)
-        if(is_vertex && p.count_type == R::Ply_type::NONE && p.name == std::string(1, char('x' + c)))
-          xyz[c] = int(k);
-      if(is_face && p.count_type != R::Ply_type::NONE && (p.name == "vertex_indices" || p.name == "vertex_index"))
-        indices = int(k);
-    }
-    if(is_vertex && (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0))
-      return "the vertex element has no x, y and z";
-    if(is_face && indices < 0)
-      return "the face element has no vertex_indices list";
-    for(std::size_t i = 0; i < e.count; ++i)
-    {
-      double c[3] = {0., 0., 0.};
-      std::vector<std::size_t> polygon;
-      const std::string item = e.name + " " + std::to_string(i);
-      for(std::size_t k = 0; k < e.properties.size(); ++k)
-      {
-        const R::Ply_property& p = e.properties[k];
-        double x = 0.;
-        if(p.count_type == R::Ply_type::NONE)
-        {
-          if(!reader.next(p.type, x))
-            return item + ": " + reader.fail;
-          for(int d = 0; d < 3; ++d)
-            if(int(k) == xyz[d])
-              c[d] = x;
-          continue;
-        }
-        double count = 0.;
-        if(!reader.next(p.count_type, count))
-          return item + ": " + reader.fail;
-        // each entry takes at least one byte: a count beyond the data left is malformed
-        if(!(count >= 0.) || count != std::floor(count) || count > double(data.size() - reader.pos))
-          return item + ": malformed list size";
-        for(std::size_t j = 0; j < std::size_t(count); ++j)
-        {
-          if(!reader.next(p.type, x))
-            return item + ": " + reader.fail;
-          if(int(k) == indices)
-          {
-            if(!(x >= 0.) || x != std::floor(x) || x >= double(byte_count))
-              return item + ": vertex index " + std::to_string(x) + " out of range";
-            polygon.push_back(std::size_t(x));
-          }
-        }
-      }
-      if(is_vertex)
-      {
-        if(!R::finite(c[0], c[1], c[2]))
-          return item + ": a NaN or infinite coordinate";
-        soup.points.emplace_back(c[0], c[1], c[2]);
-      }
-      if(is_face)
-      {
-        if(polygon.size() < 3)
-          return item + ": fewer than three vertices";
-        soup.polygons.push_back(std::move(polygon));
-      }
-    }
+    problem = R::read_ply_element(reader, e, data, byte_count, soup);
+    if(!problem.empty())
+      return problem;
   }
   std::size_t f = 0, i = 0;
   if(R::first_index_out_of_range(soup, f, i))

@@ -18,6 +18,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/core/named_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/filter/filter_iterations.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/filter/intrinsic_setup.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/intrinsic_options.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh/mesh_access.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertices/tangential_relaxation.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/vertices/vertex_update.h>
@@ -47,35 +48,25 @@ class Intrinsic_denoiser
 public:
   static constexpr bool keep_normals = given<internal_np::face_normal_t>;
 
-  // Reads and checks the options; `tmesh` must have a face.
-  Intrinsic_denoiser(const TriangleMesh& tmesh, const NamedParameters& np) : tmesh_(tmesh), np_(np), maps_(tmesh, np)
+  // Checks the options `o`; `tmesh` must have a face. `np` gives the maps
+  // (points, constrained vertices, the face normals returned) and the
+  // progress callback.
+  Intrinsic_denoiser(const TriangleMesh& tmesh, const Intrinsic_options& o, const NamedParameters& np)
+      : tmesh_(tmesh), np_(np), maps_(tmesh, np), o_(o)
   {
-    using parameters::choose_parameter;
-    using parameters::get_parameter;
-    report_.automatic_parameters = choose_parameter(get_parameter(np, internal_np::automatic_parameters), true);
-    stop_rule_ = choose_parameter(get_parameter(np, internal_np::stop_when_converged),
-                                  report_.automatic_parameters && !given<internal_np::number_of_iterations_t>);
-    given_noise_ = choose_parameter(get_parameter(np, internal_np::noise_level), -1.);
-    if constexpr(given<internal_np::noise_level_t>)
-      require_non_negative(given_noise_, fname, "noise_level");
-    vertex_iterations_ =
-        choose_parameter(get_parameter(np, internal_np::vertex_iterations), Intrinsic_defaults::vertex_iterations);
-    vertex_update_ = choose_parameter(get_parameter(np, internal_np::vertex_update), Vertex_update::PAPER);
-    prevent_folds_ = choose_parameter(get_parameter(np, internal_np::prevent_folds), true);
-    relax_ = choose_parameter(get_parameter(np, internal_np::relax_along_surface), uses_automatic_selection());
+    report_.automatic_parameters = o.automatic_parameters;
+    stop_rule_ = stops_when_converged(o);
+    if(o.noise_level)
+      require_non_negative(*o.noise_level, fname, "noise_level");
+    given_noise_ = o.noise_level.value_or(-1.);
+    vertex_iterations_ = o.vertex_iterations;
+    vertex_update_ = o.vertex_update;
+    prevent_folds_ = o.prevent_folds;
+    relax_ = relaxes_along_surface(o);
   }
 
-  // Whether the automatic selection runs: only when the kernel, the radius,
-  // the number of iterations and the noise level are all left to the
-  // automatic mode.
-  bool uses_automatic_selection() const
-  {
-    constexpr bool kernel_or_radius_given = given<internal_np::sigma_spatial_t> || given<internal_np::sigma_range_t> ||
-                                            given<internal_np::neighbor_radius_t> ||
-                                            given<internal_np::relative_neighbor_radius_t>;
-    return report_.automatic_parameters && stop_rule_ && !given<internal_np::number_of_iterations_t> &&
-           !kernel_or_radius_given && given_noise_ < 0.;
-  }
+  // Whether the automatic selection runs (see Denoising::uses_automatic_selection()).
+  bool uses_automatic_selection() const { return Denoising::uses_automatic_selection(o_); }
 
   // The automatic selection: runs the candidates of Selection_rules, sharing
   // the paths of each radius, keeps the one chosen and describes all of them
@@ -86,8 +77,7 @@ public:
   // and the setting chosen once on the whole mesh.
   Candidate_run select_automatically()
   {
-    const std::size_t sample_faces = parameters::choose_parameter(
-        parameters::get_parameter(np_, internal_np::selection_sample_faces), Sample_rules::faces);
+    const std::size_t sample_faces = o_.selection_sample_faces;
     // sampled if nf > min_ratio * sample_faces, written so as not to overflow (nf >= 1)
     const std::size_t nf = std::size_t(num_faces(tmesh_));
     if(sample_faces == 0 || sample_faces > (nf - 1) / Sample_rules::min_ratio)
@@ -118,7 +108,7 @@ public:
   Candidate_run run_with_rules()
   {
     Intrinsic_setup s = make_intrinsic_setup<ConcurrencyTag>(
-        tmesh_, np_, maps_, fname, [this](const Flat_mesh& mesh) { return defaults_for(mesh); });
+        tmesh_, o_.filter, maps_, fname, [this](const Flat_mesh& mesh) { return defaults_for(mesh); });
     const unsigned int iterations = report_setup(s);
     const auto progress = progress_callback();
 
@@ -240,7 +230,7 @@ private:
     Setup_defaults defaults;
     defaults.sigma_spatial = defaults.sigma_range = candidate.sigma;
     defaults.relative_radius = candidate.relative_radius;
-    return make_intrinsic_setup<ConcurrencyTag>(tmesh_, np_, maps, fname,
+    return make_intrinsic_setup<ConcurrencyTag>(tmesh_, o_.filter, maps, fname,
                                                 [&defaults](const Flat_mesh&) { return defaults; });
   }
 
@@ -274,8 +264,7 @@ private:
   // limit.
   unsigned int report_setup(const Intrinsic_setup& s)
   {
-    const unsigned int iterations = parameters::choose_parameter(
-        parameters::get_parameter(np_, internal_np::number_of_iterations),
+    const unsigned int iterations = o_.number_of_iterations.value_or(
         report_.automatic_parameters ? choice_.max_iterations : Intrinsic_defaults::iterations);
     report_.sigma_spatial = s.kernel.sigma_spatial;
     report_.sigma_range = s.kernel.sigma_range;
@@ -314,6 +303,7 @@ private:
   const TriangleMesh& tmesh_;
   const NamedParameters& np_;
   const Mesh_maps<TriangleMesh, NamedParameters> maps_;
+  const Intrinsic_options o_;
   Intrinsic_denoising_report report_;
   bool stop_rule_ = false;
   double given_noise_ = -1.;
@@ -323,6 +313,21 @@ private:
   bool relax_ = false;
   Automatic_choice choice_;
 };
+
+// intrinsic_denoising() with the options `o` (read from its named parameters,
+// or set at run time) and the maps and progress callback of `np`.
+template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters>
+Intrinsic_denoising_report intrinsic_denoising_with_options(TriangleMesh& tmesh, const Intrinsic_options& o,
+                                                            const NamedParameters& np)
+{
+  if(faces(tmesh).empty())
+    return Intrinsic_denoising_report();
+  Intrinsic_denoiser<ConcurrencyTag, TriangleMesh, NamedParameters> denoiser(tmesh, o, np);
+  const Candidate_run result =
+      denoiser.uses_automatic_selection() ? denoiser.select_automatically() : denoiser.run_with_rules();
+  denoiser.write_result(tmesh, result);
+  return denoiser.report();
+}
 
 } // namespace Denoising
 } // namespace internal

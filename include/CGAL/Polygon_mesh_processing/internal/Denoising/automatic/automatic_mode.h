@@ -81,6 +81,7 @@ public:
     const Selection_rules::Candidate& kept = Selection_rules::candidates[best];
     if(!selection.reuse_paths(kept.relative_radius, constrained)) // the paths of the kept candidate's radius
       selection.setup_paths(make_setup(kept), constrained);
+    const Intrinsic_kernel kernel = selection.kernel_of_width(kept.sigma);
     // Sparse noise (sparse_noise.h): if the kept result's residual says that
     // only a few vertices were noisy, those alone are denoised, from the
     // input, with the kept kernel, radius and number of iterations.
@@ -88,21 +89,21 @@ public:
     report_.inlier_residual_correlation = test.inlier_correlation;
     if(test.sparse)
     {
-      Candidate_run outliers_only = selection.run_outliers_only(kept.sigma, report_.iterations, test.outlier);
+      Candidate_run outliers_only = selection.run_outliers_only(kernel, report_.iterations, test.outlier);
       report_.outlier_vertices = test.outliers;
       report_.displacement = outliers_only.trajectory.back().rms;
       if(options_.relax && finish)
         report_.relaxed_vertices = selection.relax(outliers_only, test.outlier);
       return outliers_only;
     }
-    Candidate_run result = self_check(make_setup, selection, std::move(runs[best]), kept, constrained);
+    Candidate_run result = self_check(make_setup, selection, std::move(runs[best]), kept, kernel, constrained);
     // The second pass (Selection_rules::second_pass_share): if the kept
     // kernel changes its own short run's result by more than half as much
     // as that run changed the input, what the run removed was mostly shape,
     // and the input is kept.
     if(result.iterations > 0 && result.iterations <= Selection_rules::second_pass_max_iterations)
     {
-      const std::pair<double, double> angles = selection.second_pass_angles(result, kept.sigma);
+      const std::pair<double, double> angles = selection.second_pass_angles(result, kernel);
       report_.change_angle = angles.first;
       report_.second_pass_angle = angles.second;
       if(angles.second > Selection_rules::second_pass_share * angles.first)
@@ -110,7 +111,7 @@ public:
         report_.iterations = 0;
         report_.stop_reason = Intrinsic_stop_reason::SECOND_PASS;
         report_.displacement = 0.;
-        return selection.run_from_input(kept.sigma, 0);
+        return selection.run_from_input(kernel, 0);
       }
     }
     if(options_.relax && finish)
@@ -131,7 +132,7 @@ public:
     Automatic_selection<ConcurrencyTag> selection(options_.vertex_iterations, options_.prevent_folds,
                                                   options_.keep_normals, options_.vertex_update);
     selection.setup_paths(make_setup(Selection_rules::Candidate{sigma, radius}), constrained);
-    Candidate_run result = selection.run_from_input(sigma, k);
+    Candidate_run result = selection.run_from_input(selection.kernel_of_width(sigma), k);
     report_.mean_edge_length = selection.mean_edge_length_of_input();
     report_.neighbor_radius = radius * selection.centroid_distance();
     report_.displacement = result.trajectory[k - 1].rms;
@@ -141,8 +142,8 @@ public:
   }
 
 private:
-  // The self-check of the kept run `run` (candidate `kept`, on the current
-  // paths of `selection`): the kept kernel runs on a synthetic copy of its
+  // The self-check of the kept run `run` (candidate `kept`, of kernel
+  // `kernel`, on the current paths of `selection`): the kept kernel runs on a synthetic copy of its
   // result on the paths of the candidate's radius, then on those of the
   // other radii still held, walking from the candidate's radius towards
   // larger radii and towards smaller ones; a walk stops at the first radius
@@ -157,7 +158,7 @@ private:
   // iterations, goes on from its result).
   template <typename MakeSetup>
   Candidate_run self_check(const MakeSetup& make_setup, Automatic_selection<ConcurrencyTag>& selection,
-                           Candidate_run&& run, const Selection_rules::Candidate& kept,
+                           Candidate_run&& run, const Selection_rules::Candidate& kept, const Intrinsic_kernel& kernel,
                            const std::vector<char>& constrained)
   {
     const std::vector<Vec3> copy = selection.synthetic_copy(run);
@@ -172,7 +173,7 @@ private:
       first.push_back(radii[std::size_t(start + 1)]);
     if(start >= 1)
       first.push_back(radii[std::size_t(start - 1)]);
-    std::vector<std::vector<double>> first_errors = selection.self_check_errors(run, kept.sigma, copy, first, true);
+    std::vector<std::vector<double>> first_errors = selection.self_check_errors(run, kernel, copy, first, true);
     std::vector<double> errors = std::move(first_errors[0]);
     const auto smallest = [](const std::vector<double>& e) { return *std::min_element(e.begin(), e.end()); };
     report_.maximum_iterations = Selection_rules::self_check_max_iterations;
@@ -188,7 +189,7 @@ private:
         std::vector<double> e =
             i == start + step
                 ? std::move(first_errors[next++])
-                : std::move(selection.self_check_errors(run, kept.sigma, copy, std::vector<double>(1, r), false)[0]);
+                : std::move(selection.self_check_errors(run, kernel, copy, std::vector<double>(1, r), false)[0]);
         const double e_min = smallest(e);
         report_.self_check_radii.push_back(r);
         report_.self_check_smallest_errors.push_back(e_min);
@@ -205,9 +206,9 @@ private:
     const bool same_radius = radius == run.relative_radius;
     if(same_radius && k == run.iterations)
       return std::move(run);
-    Candidate_run changed = !same_radius         ? selection.run_from_input(kept.sigma, k)
-                            : k > run.iterations ? selection.run_on(std::move(run), kept.sigma, k - run.iterations)
-                                                 : selection.run_again(kept.sigma, k);
+    Candidate_run changed = !same_radius         ? selection.run_from_input(kernel, k)
+                            : k > run.iterations ? selection.run_on(std::move(run), kernel, k - run.iterations)
+                                                 : selection.run_again(kernel, k);
     report_.iterations = k;
     report_.stop_reason = Intrinsic_stop_reason::SELF_CHECK;
     report_.displacement = k > 0 ? changed.trajectory[k - 1].rms : 0.;

@@ -87,7 +87,11 @@ public:
   }
 
   // Runs the candidate of kernel width `sigma` on the current paths.
-  void run(double sigma) { runs_.push_back(run_again(sigma, Selection_rules::max_iterations)); }
+  void run(double sigma) { runs_.push_back(run_again(kernel_of_width(sigma), Selection_rules::max_iterations)); }
+
+  // The kernel of the current setup with sigma_s = sigma_r = `sigma` (a
+  // candidate's kernel; the setups of the other radii have the same one).
+  Intrinsic_kernel kernel_of_width(double sigma) const { return Denoising::kernel_of_width(setup_.kernel, sigma); }
 
   // Runs the `n` candidates `candidates` on the input, into runs() in their
   // order, each on the paths that `make_setup(candidate)` builds for its
@@ -163,18 +167,18 @@ public:
     return moved;
   }
 
-  // Denoises the input again with the kernel of width `sigma` on the current
-  // paths, for `iterations` iterations, every vertex held in place but those
-  // flagged in `outlier` (input vertex order).
-  Candidate_run run_outliers_only(double sigma, unsigned int iterations, const std::vector<char>& outlier)
+  // Denoises the input again with `kernel` on the current paths, for
+  // `iterations` iterations, every vertex held in place but those flagged in
+  // `outlier` (input vertex order).
+  Candidate_run run_outliers_only(const Intrinsic_kernel& kernel, unsigned int iterations,
+                                  const std::vector<char>& outlier)
   {
-    const Intrinsic_kernel kernel = kernel_of_width(sigma);
     std::vector<char> fixed = fixed_;
     const std::vector<char> moving = setup_.mesh.vertex_values_from_input_order(outlier);
     for(std::size_t v = 0; v < fixed.size(); ++v)
       fixed[v] = fixed[v] || !moving[v];
     Candidate_run run;
-    run.sigma = sigma;
+    run.sigma = kernel.sigma_range;
     run.relative_radius = current_relative_radius();
     std::vector<Vec3> points = setup_.mesh.points,
                       normals = keep_normals_ ? setup_.input_faces.normals : std::vector<Vec3>();
@@ -193,7 +197,7 @@ public:
     return run;
   }
 
-  // The self-check of `run`, a candidate of kernel width `sigma`, on the
+  // The self-check of `run`, a candidate of kernel `kernel`, on the
   // held paths (see held_radii()) of each radius of `radii`: the same kernel
   // runs on `copy_in_input_order`, a synthetic noisy copy of its result
   // (synthetic_copy()). On the first radius, if `first_as_run` (the
@@ -209,7 +213,7 @@ public:
   // iterations kept are self_check_iterations() of the candidate's. With
   // Parallel_tag the radii run as concurrent tasks (each parallel inside
   // too); the current setup does not change.
-  std::vector<std::vector<double>> self_check_errors(const Candidate_run& run, double sigma,
+  std::vector<std::vector<double>> self_check_errors(const Candidate_run& run, const Intrinsic_kernel& kernel,
                                                      const std::vector<Vec3>& copy_in_input_order,
                                                      const std::vector<double>& radii, bool first_as_run)
   {
@@ -230,9 +234,9 @@ public:
           for(std::size_t i = b; i < e; ++i)
           {
             Least_squares_recovery recovery = recovery_;
-            errors[i] = self_check_errors_on<ConcurrencyTag>(
-                *setups[i], Denoising::kernel_of_width(setups[i]->kernel, sigma), run.iterations, result, copy,
-                !(i == 0 && first_as_run), fixed_, vertex_iterations_, guard_.enabled, recovery);
+            errors[i] = self_check_errors_on<ConcurrencyTag>(*setups[i], kernel, run.iterations, result, copy,
+                                                             !(i == 0 && first_as_run), fixed_, vertex_iterations_,
+                                                             guard_.enabled, recovery);
           }
         },
         1);
@@ -259,31 +263,31 @@ public:
     return radii;
   }
 
-  // The kernel of width `sigma` on the current paths, run from the input for
-  // exactly `iterations` iterations (no stopping rule).
-  Candidate_run run_from_input(double sigma, unsigned int iterations)
+  // `kernel` on the current paths, run from the input for exactly
+  // `iterations` iterations (no stopping rule).
+  Candidate_run run_from_input(const Intrinsic_kernel& kernel, unsigned int iterations)
   {
     Candidate_run run;
-    run.sigma = sigma;
+    run.sigma = kernel.sigma_range;
     run.relative_radius = current_relative_radius();
     run.points = setup_.mesh.vertex_values_in_input_order(setup_.mesh.points);
-    return run_on(std::move(run), sigma, iterations);
+    return run_on(std::move(run), kernel, iterations);
   }
 
-  // The candidate of kernel width `sigma` on the current paths, run from the
+  // The candidate of kernel `kernel` on the current paths, run from the
   // input for at most `iterations` iterations (run_candidate()). With fewer
   // iterations than it ran in the selection, its stopping rule, which did not
   // stop it before, does not now: the result is that of the shorter count.
-  Candidate_run run_again(double sigma, unsigned int iterations)
+  Candidate_run run_again(const Intrinsic_kernel& kernel, unsigned int iterations)
   {
-    return run_candidate<ConcurrencyTag>(setup_, kernel_of_width(sigma), adjacency_, setup_.mesh.points, fixed_,
-                                         vertex_iterations_, guard_, mean_edge_, keep_normals_, &recovery_, iterations);
+    return run_candidate<ConcurrencyTag>(setup_, kernel, adjacency_, setup_.mesh.points, fixed_, vertex_iterations_,
+                                         guard_, mean_edge_, keep_normals_, &recovery_, iterations);
   }
 
-  // `run`, a candidate of kernel width `sigma` on the current paths, run on
+  // `run`, a candidate of kernel `kernel` on the current paths, run on
   // from its result for `more` iterations: the same (bit for bit) as running
   // it from the input for run.iterations + `more` without its stopping rule.
-  Candidate_run run_on(Candidate_run&& run, double sigma, unsigned int more)
+  Candidate_run run_on(Candidate_run&& run, const Intrinsic_kernel& kernel, unsigned int more)
   {
     std::vector<Vec3> points = setup_.mesh.vertex_values_from_input_order(run.points);
     Face_data current;
@@ -301,7 +305,7 @@ public:
     std::vector<Vec3> normals;
     run.trajectory.resize(run.iterations);
     iterate_filter<ConcurrencyTag>(
-        setup_, kernel_of_width(sigma), std::move(current), points, fixed_, vertex_iterations_, guard_, more,
+        setup_, kernel, std::move(current), points, fixed_, vertex_iterations_, guard_, more,
         [&](unsigned int, const std::vector<Vec3>& p, std::vector<Vec3>& filtered) {
           run.trajectory.push_back(residual_statistics(adjacency_, p, setup_.mesh.points, mean_edge_));
           if(keep_normals_)
@@ -321,9 +325,9 @@ public:
   // angles in degrees between the face normals of the input and of the
   // result, and between those of the result and of the result after
   // run.iterations more iterations of the kernel (run_on()).
-  std::pair<double, double> second_pass_angles(const Candidate_run& run, double sigma)
+  std::pair<double, double> second_pass_angles(const Candidate_run& run, const Intrinsic_kernel& kernel)
   {
-    Candidate_run again = run_on(Candidate_run(run), sigma, run.iterations);
+    Candidate_run again = run_on(Candidate_run(run), kernel, run.iterations);
     Face_data result, second;
     compute_face_data<ConcurrencyTag>(setup_.mesh, setup_.mesh.vertex_values_from_input_order(run.points), result);
     compute_face_data<ConcurrencyTag>(setup_.mesh, setup_.mesh.vertex_values_from_input_order(again.points), second);
@@ -462,9 +466,6 @@ private:
     adjacency_ = vertex_adjacency(setup_.mesh);
     mean_edge_ = mean_edge_length(setup_.mesh);
   }
-
-  // The kernel of the current setup with sigma_s = sigma_r = `sigma`.
-  Intrinsic_kernel kernel_of_width(double sigma) const { return Denoising::kernel_of_width(setup_.kernel, sigma); }
 
   unsigned int vertex_iterations_;
   bool keep_normals_;

@@ -12,6 +12,7 @@
 #ifndef CGAL_PMP_INTERNAL_DENOISING_CLASSIC_METHODS_H
 #define CGAL_PMP_INTERNAL_DENOISING_CLASSIC_METHODS_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter/filter_options.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh/face_data.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh/mesh_access.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods/neighborhoods.h>
@@ -199,6 +200,25 @@ void bilateral_normal_pass(const Path_forest& direct, const Face_data& fd, const
                                            const double len = norm(sum);
                                            out[i] = (len > 0. && std::isfinite(len)) ? (1. / len) * sum : fd.normals[i];
                                          });
+}
+
+// sigma_spatial and sigma_range of a classic method (defaults `spatial` and
+// `range`), checked positive.
+struct Classic_sigmas
+{
+  double spatial, range;
+};
+
+template <typename NamedParameters>
+Classic_sigmas read_classic_sigmas(const NamedParameters& np, const char* fname, double spatial, double range)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const Classic_sigmas s{choose_parameter(get_parameter(np, internal_np::sigma_spatial), spatial),
+                         choose_parameter(get_parameter(np, internal_np::sigma_range), range)};
+  require_positive(s.spatial, fname, "sigma_spatial");
+  require_positive(s.range, fname, "sigma_range");
+  return s;
 }
 
 } // namespace Denoising

@@ -1,13 +1,14 @@
 // Copyright (c) 2026 The intrinsic denoising package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// What the intrinsic filters read from their named parameters (kernel,
-// radius, path strategy) and the construction of their paths: shared by the
+// The kernel, radius and paths of the intrinsic filters from their options
+// (filter_options.h), and the construction of their paths: shared by the
 // face-normal denoiser and the general filter of section 3.1.
 
 #ifndef CGAL_PMP_INTERNAL_DENOISING_INTRINSIC_SETUP_H
 #define CGAL_PMP_INTERNAL_DENOISING_INTRINSIC_SETUP_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter/filter_options.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/mesh/mesh_access.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods/neighborhoods.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/paths/geodesic_paths.h>
@@ -36,7 +37,6 @@ struct Intrinsic_defaults
   static constexpr double sigma_range = 0.4;
 };
 
-// sigma_s, sigma_r, n, m and the self term, checked.
 // The values used for the parameters the caller did not give: the fixed
 // defaults, or those the automatic mode of intrinsic_denoising() derived from
 // the mesh.
@@ -47,18 +47,17 @@ struct Setup_defaults
   double relative_radius = Intrinsic_defaults::relative_radius;
 };
 
-template <typename NamedParameters>
-Intrinsic_kernel read_kernel(const NamedParameters& np, const char* fname, bool default_self = false,
-                             const Setup_defaults& defaults = Setup_defaults())
+// The kernel of `o`: sigma_s, sigma_r (defaults from `defaults`), n, m and
+// the self term (default `default_self`), checked.
+inline Intrinsic_kernel filter_kernel(const Filter_options& o, const char* fname, bool default_self = false,
+                                      const Setup_defaults& defaults = Setup_defaults())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
   Intrinsic_kernel k;
-  k.sigma_spatial = choose_parameter(get_parameter(np, internal_np::sigma_spatial), defaults.sigma_spatial);
-  k.sigma_range = choose_parameter(get_parameter(np, internal_np::sigma_range), defaults.sigma_range);
-  k.spatial_exponent = choose_parameter(get_parameter(np, internal_np::spatial_exponent), 1.);
-  k.range_exponent = choose_parameter(get_parameter(np, internal_np::range_exponent), 1.);
-  k.include_self = choose_parameter(get_parameter(np, internal_np::include_self_weight), default_self);
+  k.sigma_spatial = o.sigma_spatial.value_or(defaults.sigma_spatial);
+  k.sigma_range = o.sigma_range.value_or(defaults.sigma_range);
+  k.spatial_exponent = o.spatial_exponent;
+  k.range_exponent = o.range_exponent;
+  k.include_self = o.include_self_weight.value_or(default_self);
   require_positive(k.sigma_spatial, fname, "sigma_spatial");
   require_positive(k.sigma_range, fname, "sigma_range");
   require_positive(k.spatial_exponent, fname, "spatial_exponent");
@@ -100,8 +99,8 @@ inline std::size_t square_pattern_compact_min_nodes_for_filter()
 // faces of `faces` (with their data `fd`); they are refused for other items.
 // With `use_step_length`, the step lengths of eq. 4 are set, in units of
 // `unit` (the mean distance between adjacent items).
-template <typename ConcurrencyTag, typename NamedParameters, typename Adjacency>
-Path_forest make_paths(const NamedParameters& np, Intrinsic_path_strategy strategy, bool use_step_length, double unit,
+template <typename ConcurrencyTag, typename Adjacency>
+Path_forest make_paths(const Filter_options& o, Intrinsic_path_strategy strategy, bool use_step_length, double unit,
                        const std::vector<Vec3>& positions, const Adjacency& adjacent, const Csr& neighbors,
                        const Flat_mesh* faces, const Face_data* fd, const char* fname)
 {
@@ -125,8 +124,7 @@ Path_forest make_paths(const NamedParameters& np, Intrinsic_path_strategy strate
   case Intrinsic_path_strategy::GEODESIC:
   {
     Geodesic_path_options go;
-    go.patch_rings =
-        parameters::choose_parameter(parameters::get_parameter(np, internal_np::geodesic_patch_rings), go.patch_rings);
+    go.patch_rings = o.geodesic_patch_rings.value_or(go.patch_rings);
     go.step_length = use_step_length;
     go.length_unit = unit > 0. ? unit : 1.;
     return geodesic_paths<ConcurrencyTag>(*faces, *fd, neighbors, go); // with its own step lengths
@@ -137,18 +135,6 @@ Path_forest make_paths(const NamedParameters& np, Intrinsic_path_strategy strate
   if(use_step_length)
     set_step_lengths(paths, positions, unit > 0. ? unit : 1.);
   return paths;
-}
-
-template <typename NamedParameters>
-Intrinsic_path_strategy read_strategy(const NamedParameters& np, Intrinsic_path_strategy default_strategy)
-{
-  return parameters::choose_parameter(parameters::get_parameter(np, internal_np::path_strategy), default_strategy);
-}
-
-template <typename NamedParameters>
-bool read_step_length(const NamedParameters& np)
-{
-  return parameters::choose_parameter(parameters::get_parameter(np, internal_np::use_step_length), false);
 }
 
 // What stays fixed across the iterations of Algorithm 1: the flat mesh and
@@ -169,22 +155,21 @@ struct Fixed_setup_defaults
   Setup_defaults operator()(const Flat_mesh&) const { return Setup_defaults(); }
 };
 
-// `choose_defaults(mesh)` gives the values of the parameters not in `np`.
-template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters, typename Maps,
-          typename ChooseDefaults = Fixed_setup_defaults>
-Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParameters& np, const Maps& maps,
+// `choose_defaults(mesh)` gives the values of the options not set in `o`.
+template <typename ConcurrencyTag, typename TriangleMesh, typename Maps, typename ChooseDefaults = Fixed_setup_defaults>
+Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const Filter_options& o, const Maps& maps,
                                      const char* fname, const ChooseDefaults& choose_defaults = ChooseDefaults())
 {
   Intrinsic_setup s;
-  const Intrinsic_path_strategy strategy = read_strategy(np, Intrinsic_path_strategy::SQUARE_PATTERN);
-  const bool step_length = read_step_length(np);
+  const Intrinsic_path_strategy strategy = o.path_strategy.value_or(Intrinsic_path_strategy::SQUARE_PATTERN);
+  const bool step_length = o.use_step_length;
   s.mesh = maps.flat(tmesh, fname);
   const Setup_defaults defaults = choose_defaults(static_cast<const Flat_mesh&>(s.mesh));
-  s.kernel = read_kernel(np, fname, false, defaults);
+  s.kernel = filter_kernel(o, fname, false, defaults);
   compute_face_data<ConcurrencyTag>(s.mesh, s.mesh.points, s.input_faces);
   const double d = mean_adjacent_centroid_distance<ConcurrencyTag>(s.mesh, s.input_faces);
   s.centroid_distance = d;
-  s.radius = read_radius(np, fname, d, defaults.relative_radius);
+  s.radius = filter_radius(o, fname, d, defaults.relative_radius);
   if(strategy == Intrinsic_path_strategy::SQUARE_PATTERN || strategy == Intrinsic_path_strategy::DIRECT)
     reorder_faces_for_locality<ConcurrencyTag>(s.mesh, s.input_faces); // same paths; results in s.mesh.input_face order
   if(strategy == Intrinsic_path_strategy::SQUARE_PATTERN)              // each neighbourhood searched and used at once
@@ -199,7 +184,7 @@ Intrinsic_setup make_intrinsic_setup(const TriangleMesh& tmesh, const NamedParam
     // released once the paths are built: they hold everything the iterations need
     const Csr neighbors = geometric_neighborhoods<ConcurrencyTag>(s.mesh, s.input_faces.centroids, s.radius,
                                                                   max_neighbors_within(s.radius, s.input_faces));
-    s.paths = make_paths<ConcurrencyTag>(np, strategy, step_length, d, s.input_faces.centroids,
+    s.paths = make_paths<ConcurrencyTag>(o, strategy, step_length, d, s.input_faces.centroids,
                                          Face_vertex_adjacency{s.mesh}, neighbors, &s.mesh, &s.input_faces, fname);
   }
   return s;

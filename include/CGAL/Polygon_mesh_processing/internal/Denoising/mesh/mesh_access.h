@@ -91,25 +91,6 @@ struct Mesh_maps
   }
 };
 
-// The neighbourhood radius: neighbor_radius if given, else
-// relative_neighbor_radius (default `default_relative`) times `unit` (the
-// mean distance between adjacent items' positions).
-template <typename NamedParameters>
-double read_radius(const NamedParameters& np, const char* fname, double unit, double default_relative)
-{
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::neighbor_radius_t>::value)
-  {
-    const double absolute = get_parameter(np, internal_np::neighbor_radius);
-    require_positive(absolute, fname, "neighbor_radius");
-    return absolute;
-  }
-  const double relative = choose_parameter(get_parameter(np, internal_np::relative_neighbor_radius), default_relative);
-  require_positive(relative, fname, "relative_neighbor_radius");
-  return relative * unit;
-}
-
 } // namespace Denoising
 } // namespace internal
 } // namespace Polygon_mesh_processing
