@@ -244,20 +244,6 @@ void run_released(Work&& work)
 // intrinsic_denoising()
 
 // The arguments of intrinsic_denoising() as Python gives them.
-struct Intrinsic_arguments
-{
-  bool automatic_parameters = true;
-  std::optional<double> noise_level, sigma_spatial, sigma_range, neighbor_radius, relative_neighbor_radius;
-  std::optional<long long> number_of_iterations;
-  std::optional<bool> stop_when_converged, relax_along_surface;
-  long long vertex_iterations = 2, geodesic_patch_rings = 0;
-  long long selection_sample_faces =
-      static_cast<long long>(PMP::Intrinsic_denoising_report::default_selection_sample_faces);
-  std::string vertex_update = "paper", path_strategy = "square_pattern";
-  double spatial_exponent = 1., range_exponent = 1.;
-  bool use_step_length = false, include_self_weight = false, prevent_folds = true;
-};
-
 unsigned int to_unsigned(long long x, const char* name)
 {
   if(x < 0 || x > static_cast<long long>(std::numeric_limits<unsigned int>::max()))
@@ -313,18 +299,8 @@ py::dict report_dict(const PMP::Intrinsic_denoising_report& r)
 }
 
 py::tuple denoise(const py::handle& V, const py::handle& F, const py::object& constrained, const py::object& progress,
-                  long long threads, const Intrinsic_arguments& o)
+                  long long threads, const PMP::internal::Denoising::Intrinsic_options& options)
 {
-  // argument checks that need no mesh (the library checks the values)
-  if(o.number_of_iterations)
-    to_unsigned(*o.number_of_iterations, "number_of_iterations");
-  const unsigned int vertex_iterations = to_unsigned(o.vertex_iterations, "vertex_iterations");
-  const unsigned int rings = to_unsigned(o.geodesic_patch_rings, "geodesic_patch_rings");
-  const std::size_t sample_faces = to_unsigned(o.selection_sample_faces, "selection_sample_faces");
-  const PMP::Vertex_update update = read_vertex_update(o.vertex_update);
-  const PMP::Intrinsic_path_strategy strategy = read_paths(o.path_strategy);
-  if(o.neighbor_radius && o.relative_neighbor_radius)
-    throw py::value_error("intrinsic_denoising(): give neighbor_radius or relative_neighbor_radius, not both");
   if(!progress.is_none() && !PyCallable_Check(progress.ptr()))
     throw py::type_error("progress must be callable as progress(done, total)");
 
@@ -342,27 +318,6 @@ py::tuple denoise(const py::handle& V, const py::handle& F, const py::object& co
     if(!progress.is_none())
       progress(done, total);
   };
-  PMP::internal::Denoising::Intrinsic_options options;
-  options.automatic_parameters = o.automatic_parameters;
-  if(o.number_of_iterations)
-    options.number_of_iterations = static_cast<unsigned int>(*o.number_of_iterations);
-  options.filter.sigma_spatial = o.sigma_spatial;
-  options.filter.sigma_range = o.sigma_range;
-  options.filter.neighbor_radius = o.neighbor_radius;
-  options.filter.relative_neighbor_radius = o.relative_neighbor_radius;
-  options.noise_level = o.noise_level;
-  options.stop_when_converged = o.stop_when_converged;
-  options.relax_along_surface = o.relax_along_surface;
-  options.vertex_iterations = vertex_iterations;
-  options.filter.spatial_exponent = o.spatial_exponent;
-  options.filter.range_exponent = o.range_exponent;
-  options.filter.path_strategy = strategy;
-  options.filter.use_step_length = o.use_step_length;
-  options.filter.geodesic_patch_rings = rings;
-  options.filter.include_self_weight = o.include_self_weight;
-  options.prevent_folds = o.prevent_folds;
-  options.vertex_update = update;
-  options.selection_sample_faces = sample_faces;
   const auto np = CGAL::parameters::progress_callback(callback)
                       .vertex_is_constrained_map(constrained_vertices)
                       .face_normal_map(normals);
@@ -491,26 +446,30 @@ void define_intrinsic(py::module_& m)
          bool include_self_weight, bool prevent_folds, std::optional<bool> relax_along_surface,
          long long selection_sample_faces, const py::object& constrained, const py::object& progress,
          long long threads) {
-        Intrinsic_arguments o;
+        // argument checks that need no mesh (the library checks the values)
+        PMP::internal::Denoising::Intrinsic_options o;
         o.automatic_parameters = automatic_parameters;
+        if(number_of_iterations)
+          o.number_of_iterations = to_unsigned(*number_of_iterations, "number_of_iterations");
+        o.vertex_iterations = to_unsigned(vertex_iterations, "vertex_iterations");
+        o.filter.geodesic_patch_rings = to_unsigned(geodesic_patch_rings, "geodesic_patch_rings");
+        o.selection_sample_faces = to_unsigned(selection_sample_faces, "selection_sample_faces");
+        o.vertex_update = read_vertex_update(vertex_update);
+        o.filter.path_strategy = read_paths(path_strategy);
+        if(neighbor_radius && relative_neighbor_radius)
+          throw py::value_error("intrinsic_denoising(): give neighbor_radius or relative_neighbor_radius, not both");
         o.noise_level = noise_level;
-        o.number_of_iterations = number_of_iterations;
         o.stop_when_converged = stop_when_converged;
-        o.vertex_iterations = vertex_iterations;
-        o.vertex_update = vertex_update;
-        o.sigma_spatial = sigma_spatial;
-        o.sigma_range = sigma_range;
-        o.spatial_exponent = spatial_exponent;
-        o.range_exponent = range_exponent;
-        o.neighbor_radius = neighbor_radius;
-        o.relative_neighbor_radius = relative_neighbor_radius;
-        o.path_strategy = path_strategy;
-        o.use_step_length = use_step_length;
-        o.geodesic_patch_rings = geodesic_patch_rings;
-        o.include_self_weight = include_self_weight;
+        o.filter.sigma_spatial = sigma_spatial;
+        o.filter.sigma_range = sigma_range;
+        o.filter.spatial_exponent = spatial_exponent;
+        o.filter.range_exponent = range_exponent;
+        o.filter.neighbor_radius = neighbor_radius;
+        o.filter.relative_neighbor_radius = relative_neighbor_radius;
+        o.filter.use_step_length = use_step_length;
+        o.filter.include_self_weight = include_self_weight;
         o.prevent_folds = prevent_folds;
         o.relax_along_surface = relax_along_surface;
-        o.selection_sample_faces = selection_sample_faces;
         return denoise(V, F, constrained, progress, threads, o);
       },
       py::arg("V"), py::arg("F"), py::kw_only(), py::arg("automatic_parameters") = true,
@@ -521,7 +480,8 @@ void define_intrinsic(py::module_& m)
       py::arg("relative_neighbor_radius") = py::none(), py::arg("path_strategy") = "square_pattern",
       py::arg("use_step_length") = false, py::arg("geodesic_patch_rings") = 0, py::arg("include_self_weight") = false,
       py::arg("prevent_folds") = true, py::arg("relax_along_surface") = py::none(),
-      py::arg("selection_sample_faces") = Intrinsic_arguments().selection_sample_faces,
+      py::arg("selection_sample_faces") =
+          static_cast<long long>(PMP::Intrinsic_denoising_report::default_selection_sample_faces),
       py::arg("constrained") = py::none(), py::arg("progress") = py::none(), py::arg("threads") = 0,
       R"(Denoises the triangle mesh (V, F) with intrinsic_denoising() (Algorithm 1 of "Mesh denoising via
 generalized intrinsic filter on 2D manifold") and returns (V_out, report).

@@ -37,7 +37,7 @@ $render "$work/reports/geodesic_vs_square.html" --tile 240 --cols 4 --heat --out
 # and 0.3, automatic mode: noisy, result, reference, per-face normal error
 python3 scripts/sliver_plane.py "$work/sliver_plane.off"
 for s in 0.05 0.3; do
-  build/examples/Polygon_mesh_processing/denoise "$work/sliver_plane.off" --noise $s \
+  build/tools/denoise/denoise "$work/sliver_plane.off" --noise $s \
     --reference "$work/sliver_plane.off" --report "$work/reports/sliver_$s.html" -o "$work/sliver_denoised_$s.off"
   $render "$work/reports/sliver_$s.html" --tile 240 --cols 3 --heat --out "$fig/sliver_plane_${s}_error.png"
 done

@@ -7,7 +7,7 @@ setting and a wider, longer setting, side by side, one row a scan.
 SCANS_DIR holds the real scans (kinect_cone_noisy.obj with
 kinect_cone_groundtruth.obj, angel.obj, rabbit.obj, iron.ply); OUT.png
 defaults to doc/Polygon_mesh_processing/fig/real_scans.png. Needs the built
-`denoise` tool (build/examples/Polygon_mesh_processing/denoise), the renderer
+`denoise` tool (build/tools/denoise/denoise), the renderer
 of tools/render (scripts/install_render_deps.sh) and Debian's python3-numpy
 and python3-pil. Each scan is turned so that its mean face normal (the
 scanner's viewing direction) faces the renderer's camera. The E_n, the
@@ -24,7 +24,7 @@ import numpy as np
 from PIL import Image, ImageDraw
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DENOISE = os.path.join(ROOT, "build", "examples", "Polygon_mesh_processing", "denoise")
+DENOISE = os.path.join(ROOT, "build", "tools", "denoise", "denoise")
 RENDER = os.path.join(ROOT, "tools", "render", "render.mjs")
 # the renderer's default viewing direction (tools/render/viewer.js)
 CAMERA = np.array([1.0, 0.6, 1.4]) / np.linalg.norm([1.0, 0.6, 1.4])

@@ -26,7 +26,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
-      -DDENOISING_BUILD_FUZZERS=ON -DDENOISING_BUILD_TESTS=OFF -DDENOISING_BUILD_EXAMPLES=OFF \
+      -DDENOISING_BUILD_FUZZERS=ON -DDENOISING_BUILD_TESTS=OFF -DDENOISING_BUILD_EXAMPLES=OFF -DDENOISING_BUILD_TOOLS=OFF \
       -DDENOISING_BUILD_BENCHMARKS=OFF >/dev/null
 targets=()
 for f in "${formats[@]}"; do targets+=("fuzz_denoise_$f"); done

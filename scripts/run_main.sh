@@ -10,7 +10,7 @@ absolute() { case "$1" in /*) echo "$1" ;; *) echo "$caller/$1" ;; esac; }
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
 bash scripts/build.sh --target denoise
-denoise=$(pwd)/build/examples/Polygon_mesh_processing/denoise
+denoise=$(pwd)/build/tools/denoise/denoise
 mkdir -p build/output
 cd build/output
 if [ $# -eq 0 ]; then

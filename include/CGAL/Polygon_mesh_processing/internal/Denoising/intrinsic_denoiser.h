@@ -58,10 +58,6 @@ public:
     stop_rule_ = stops_when_converged(o);
     if(o.noise_level)
       require_non_negative(*o.noise_level, fname, "noise_level");
-    given_noise_ = o.noise_level.value_or(-1.);
-    vertex_iterations_ = o.vertex_iterations;
-    vertex_update_ = o.vertex_update;
-    prevent_folds_ = o.prevent_folds;
     relax_ = relaxes_along_surface(o);
   }
 
@@ -118,8 +114,8 @@ public:
       reorder_vertices_for_locality(s.mesh);
     const std::vector<char> fixed = s.mesh.vertex_values_from_input_order(maps_.constrained(tmesh_));
     Fold_safeguard guard;
-    guard.enabled = prevent_folds_;
-    Least_squares_recovery recovery = make_vertex_recovery(vertex_update_);
+    guard.enabled = o_.prevent_folds;
+    Least_squares_recovery recovery = make_vertex_recovery(o_.vertex_update);
     const std::vector<Vec3> input_normals = guard.enabled ? s.input_faces.normals : std::vector<Vec3>();
     guard.reference = &input_normals;
 
@@ -128,7 +124,7 @@ public:
     std::vector<Vec3> previous, last_filtered;
     report_.stop_reason = Intrinsic_stop_reason::ITERATION_LIMIT;
     iterate_filter<ConcurrencyTag>(
-        s, s.kernel, std::move(s.input_faces), points, fixed, vertex_iterations_, guard, iterations,
+        s, s.kernel, std::move(s.input_faces), points, fixed, o_.vertex_iterations, guard, iterations,
         [&](unsigned int k, const std::vector<Vec3>& p, std::vector<Vec3>& filtered) {
           report_.iterations = k;
           progress(std::size_t(k), std::size_t(iterations));
@@ -209,10 +205,10 @@ private:
   Automatic_mode_options automatic_mode_options() const
   {
     Automatic_mode_options o;
-    o.vertex_iterations = vertex_iterations_;
-    o.prevent_folds = prevent_folds_;
+    o.vertex_iterations = o_.vertex_iterations;
+    o.prevent_folds = o_.prevent_folds;
     o.keep_normals = keep_normals;
-    o.vertex_update = vertex_update_;
+    o.vertex_update = o_.vertex_update;
     o.relax = relax_;
     return o;
   }
@@ -240,7 +236,7 @@ private:
   Setup_defaults defaults_for(const Flat_mesh& mesh)
   {
     const bool need_noise = report_.automatic_parameters || stop_rule_;
-    if(need_noise && given_noise_ < 0.)
+    if(need_noise && !o_.noise_level)
     {
       // the estimate measures the mean edge length too
       const Noise_estimate estimate = estimate_noise<ConcurrencyTag>(mesh);
@@ -250,11 +246,11 @@ private:
     else
     {
       report_.mean_edge_length = mean_edge_length<ConcurrencyTag>(mesh);
-      report_.noise_level = need_noise ? given_noise_ : 0.;
+      report_.noise_level = need_noise ? *o_.noise_level : 0.;
     }
     if(need_noise)
     {
-      report_.noise_level_estimated = given_noise_ < 0.;
+      report_.noise_level_estimated = !o_.noise_level;
       choice_ = automatic_choice(report_.noise_level);
     }
     return report_.automatic_parameters ? choice_.kernel : Setup_defaults();
@@ -270,10 +266,10 @@ private:
     report_.sigma_range = s.kernel.sigma_range;
     report_.neighbor_radius = s.radius;
     report_.relative_neighbor_radius = s.centroid_distance > 0. ? s.radius / s.centroid_distance : 0.;
-    report_.vertex_iterations = vertex_iterations_;
+    report_.vertex_iterations = o_.vertex_iterations;
     report_.maximum_iterations = iterations;
     report_.displacement = 0.;
-    report_.vertex_update = vertex_update_;
+    report_.vertex_update = o_.vertex_update;
     return iterations;
   }
 
@@ -306,10 +302,6 @@ private:
   const Intrinsic_options o_;
   Intrinsic_denoising_report report_;
   bool stop_rule_ = false;
-  double given_noise_ = -1.;
-  unsigned int vertex_iterations_ = 0;
-  Vertex_update vertex_update_ = Vertex_update::PAPER;
-  bool prevent_folds_ = true;
   bool relax_ = false;
   Automatic_choice choice_;
 };
