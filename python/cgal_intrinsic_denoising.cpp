@@ -295,6 +295,9 @@ py::dict report_dict(const PMP::Intrinsic_denoising_report& r)
   d["self_check_errors"] = r.self_check_errors;
   d["self_check_radii"] = r.self_check_radii;
   d["self_check_smallest_errors"] = r.self_check_smallest_errors;
+  d["residual_hop_correlations"] = r.residual_hop_correlations;
+  d["residual_correlation_length"] = r.residual_correlation_length;
+  d["residual_axis_share"] = r.residual_axis_share;
   return d;
 }
 

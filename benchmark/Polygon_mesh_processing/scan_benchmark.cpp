@@ -28,14 +28,25 @@
 //       input), on every stride-th simulated scan and on each noise-free
 //       mesh FILE (E_n against itself); with --out OUTDIR, the simulated
 //       scans' noisy and ground-truth meshes as OFF files there.
+//   scan_benchmark --trace FILE [--real DIR] [--stride N] [--clean FILE]...
+//       every iteration (1 to 64) of six fixed settings on the real scans,
+//       the simulated scans, the noise-free meshes and controls with white
+//       and with correlated noise along the normals: E_n, the turn of the
+//       face normals from the input's, the residual's RMS and correlation,
+//       at k = 2, 4, ..., 64 the turn from iteration k / 2, the share of
+//       edges flatter than 1 degree, and the input's single-view share.
 //   --window W, --quantisation Q, --levels S1,S2,...  the simulation's
 //       block-matching window (pixels), disparity step (pixels) and sigma_d.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Polygon_mesh_processing/add_noise.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/candidates.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/residual_statistics.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/filter/filter_iterations.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -52,12 +63,14 @@
 #include <fstream>
 #include <iostream>
 #include <queue>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace ds = denoising_support;
+namespace D = PMP::internal::Denoising;
 using Mesh = ds::Scan_mesh;
 using Point = ds::Scan_point;
 using Vector = ds::Scan_vector;
@@ -682,6 +695,164 @@ int probe_mode(const std::string& real_dir, const std::vector<std::string>& clea
   return 0;
 }
 
+// ---------------------------------------------------------------- trace
+
+// Gaussian noise along the vertex normals whose values are correlated over
+// the surface: white draws smoothed by `rounds` passes of neighbour
+// averaging (the correlation length grows as the square root of the
+// rounds), scaled to an RMS of `sigma` mean edge lengths. Seeded.
+void add_correlated_normal_noise(Mesh& m, double sigma, unsigned int rounds, unsigned int seed)
+{
+  std::mt19937 engine(seed);
+  std::normal_distribution<double> normal(0., 1.);
+  std::vector<double> s(num_vertices(m)), t(s.size());
+  for(double& x : s)
+    x = normal(engine);
+  for(unsigned int r = 0; r < rounds; ++r)
+  {
+    for(auto v : vertices(m))
+    {
+      double sum = s[v.idx()];
+      std::size_t n = 1;
+      for(auto w : CGAL::vertices_around_target(halfedge(v, m), m))
+      {
+        sum += s[w.idx()];
+        ++n;
+      }
+      t[v.idx()] = sum / double(n);
+    }
+    s.swap(t);
+  }
+  double sq = 0.;
+  for(double x : s)
+    sq += x * x;
+  const double scale = sigma * mean_edge_length(m) / std::sqrt(sq / double(s.size()));
+  auto normals = m.add_property_map<Mesh::Vertex_index, Vector>("v:trace_normal").first;
+  PMP::compute_vertex_normals(m, normals);
+  for(auto v : vertices(m))
+    m.point(v) = m.point(v) + scale * s[v.idx()] * normals[v];
+  m.remove_property_map(normals);
+}
+
+// Every iteration (1..kmax) of a few fixed settings on one input: E_n
+// against `truth`, the mean turn of the face normals from the input's, the
+// residual's RMS (mean edge lengths) and its correlation across edges.
+void trace_one(std::FILE* out, const std::string& name, const Mesh& noisy, const Mesh& truth)
+{
+  constexpr unsigned int kmax = 64, v_iter = 2;
+  const D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters> maps(noisy, CGAL::parameters::default_values());
+  const D::Flat_mesh ref =
+      D::Mesh_maps<Mesh, CGAL::parameters::Default_named_parameters>(truth, CGAL::parameters::default_values())
+          .flat(truth, "trace");
+  const struct
+  {
+    double sigma, radius;
+  } settings[] = {{0.4, 3.}, {0.4, 4.}, {0.8, 3.}, {0.8, 6.}, {1.4, 3.}, {1.4, 6.}};
+  double last_radius = -1.;
+  const double view = single_view_share(noisy);
+  D::Intrinsic_setup base;
+  for(const auto& st : settings)
+  {
+    if(st.radius != last_radius)
+    {
+      base = D::make_intrinsic_setup<Tag>(
+          noisy, D::read_filter_options(CGAL::parameters::relative_neighbor_radius(st.radius)), maps, "trace");
+      last_radius = st.radius;
+    }
+    const double L = D::mean_edge_length(base.mesh);
+    const D::Csr adjacency = D::vertex_adjacency(base.mesh);
+    D::Face_data ref_fd;
+    D::compute_face_data<CGAL::Sequential_tag>(base.mesh, ref.points, ref_fd);
+    D::Intrinsic_kernel kernel = base.kernel;
+    kernel.sigma_spatial = kernel.sigma_range = st.sigma;
+    std::vector<D::Vec3> points = base.mesh.points;
+    const std::vector<D::Vec3> input_points = points;
+    const std::vector<char> fixed(points.size(), 0);
+    D::Fold_safeguard guard;
+    guard.enabled = true;
+    guard.reference = &base.input_faces.normals;
+    std::vector<D::Vec3> half_normals = base.input_faces.normals; // at the last power of two
+    std::fprintf(out, "%s\t%zu\t%.1f\t%.1f\t0\t%.4f\t0\t0\t0\t0\t%.4f\t%.4f\n", name.c_str(),
+                 std::size_t(num_faces(noisy)), st.sigma, st.radius,
+                 D::mean_angle_degrees(base.input_faces.normals, ref_fd.normals),
+                 D::flat_edge_fraction<Tag>(base.mesh, base.input_faces.normals, 1.), view);
+    D::iterate_filter<Tag>(base, kernel, base.input_faces, points, fixed, v_iter, guard, kmax,
+                           [&](unsigned int k, const std::vector<D::Vec3>& p, std::vector<D::Vec3>&) {
+                             D::Face_data fd;
+                             D::compute_face_data<Tag>(base.mesh, p, fd);
+                             const D::Residual_statistics rs = D::residual_statistics(adjacency, p, input_points, L);
+                             const bool power = (k & (k - 1)) == 0;
+                             const double half = power && k > 1 ? D::mean_angle_degrees(fd.normals, half_normals) : 0.;
+                             if(power)
+                               half_normals = fd.normals;
+                             std::fprintf(out, "%s\t%zu\t%.1f\t%.1f\t%u\t%.4f\t%.4f\t%.5f\t%.5f\t%.4f\t%.4f\t%.4f\n",
+                                          name.c_str(), std::size_t(num_faces(noisy)), st.sigma, st.radius, k,
+                                          D::mean_angle_degrees(fd.normals, ref_fd.normals),
+                                          D::mean_angle_degrees(fd.normals, base.input_faces.normals), rs.rms,
+                                          rs.correlation, half, D::flat_edge_fraction<Tag>(base.mesh, fd.normals, 1.),
+                                          view);
+                             return true;
+                           });
+    std::fflush(out);
+  }
+}
+
+// --trace FILE: trace_one() on the real scans of DIR (E_n against the input
+// where there is no ground truth), on every stride-th simulated scan, on
+// each noise-free mesh FILE, and on controls: corpus meshes with white and
+// with correlated Gaussian noise along the normals.
+int trace_mode(const std::string& real_dir, const std::vector<std::string>& clean, std::size_t stride,
+               const std::string& path)
+{
+  std::FILE* out = std::fopen(path.c_str(), "w");
+  if(!out)
+    return 1;
+  std::fprintf(out, "input\tfaces\tsigma\tradius\tk\tEn\tturn\trms\tcorrelation\thalf\tflat\tview\n");
+  if(!real_dir.empty())
+  {
+    Mesh noisy, truth;
+    if(read_mesh(real_dir + "/kinect_cone_noisy.obj", noisy) &&
+       read_mesh(real_dir + "/kinect_cone_groundtruth.obj", truth))
+      trace_one(out, "real:cone", noisy, truth);
+    for(const char* other : {"angel.obj", "rabbit.obj", "iron.ply"})
+      if(read_mesh(real_dir + "/" + other, noisy))
+        trace_one(out, std::string("real-nt:") + other, noisy, noisy);
+  }
+  const std::vector<Scan_input> inputs = simulated_inputs();
+  for(std::size_t i = 0; i < inputs.size(); i += stride)
+  {
+    ds::Depth_scan_result s;
+    if(!scan(inputs[i], s))
+      return 1;
+    if(num_faces(s.noisy) >= 100)
+      trace_one(out, "sim:" + inputs[i].name(), s.noisy, s.ground_truth);
+  }
+  for(const std::string& file : clean)
+  {
+    Mesh m;
+    if(read_mesh(file, m) && num_faces(m) > 0)
+      trace_one(out, "clean:" + std::filesystem::path(file).filename().string(), m, m);
+  }
+  unsigned int seed = 1;
+  for(const char* name : corpus_meshes)
+  {
+    Mesh truth;
+    if(!read_mesh(CGAL::data_file_path(std::string("meshes/") + name + ".off"), truth))
+      continue;
+    for(double sigma : {0.1, 0.3})
+    {
+      Mesh white = truth;
+      PMP::add_gaussian_noise(white, sigma, CGAL::parameters::random_seed(seed++));
+      trace_one(out, "white:" + std::string(name) + ":s" + std::to_string(sigma).substr(0, 3), white, truth);
+      Mesh correlated = truth;
+      add_correlated_normal_noise(correlated, 2. * sigma, 8, seed++);
+      trace_one(out, "corr8:" + std::string(name) + ":s" + std::to_string(2. * sigma).substr(0, 3), correlated, truth);
+    }
+  }
+  std::fclose(out);
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -702,6 +873,11 @@ int main(int argc, char** argv)
     };
     if(a == "--stats" || a == "--simulated" || a == "--probe")
       mode = a;
+    else if(a == "--trace")
+    {
+      mode = a;
+      results = value();
+    }
     else if(a == "--real")
     {
       real_dir = value();
@@ -743,6 +919,8 @@ int main(int argc, char** argv)
     return probe_mode(real_dir, clean, stride, outdir);
   if(mode == "--real")
     return real_mode(real_dir, outdir);
+  if(mode == "--trace")
+    return trace_mode(real_dir, clean, stride, results);
   std::fprintf(stderr,
                "usage: scan_benchmark --stats [--real DIR] [--tsv FILE] | --simulated [--results FILE] "
                "[--stride N] | --real DIR [--out OUTDIR] | --probe [--real DIR] [--stride N] [--clean FILE]...\n"

@@ -10,6 +10,7 @@
 #include <CGAL/Polygon_mesh_processing/denoising_error.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/automatic_selection.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/noise_estimate.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/residual_description.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/sparse_noise.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/neighborhoods/neighborhoods.h>
 #include <CGAL/Polygon_mesh_processing/intrinsic_denoising.h>
@@ -24,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iostream>
 #include <limits>
 #include <random>
@@ -214,6 +216,13 @@ TEST(AutomaticParameters, NoisyFandiskAutomaticMode)
   EXPECT_EQ(r.iterations, w.iterations);
   EXPECT_GT(r.neighbor_radius, 0.);
   EXPECT_EQ(r.stop_reason, PMP::Intrinsic_stop_reason::RESIDUAL_CORRELATED);
+  // the residual at the kept candidate's stop: independent noise removed,
+  // uncorrelated beyond one edge (measured 0.001 at eight), spread over the
+  // directions of fandisk's normals (measured 45%)
+  ASSERT_EQ(r.residual_hop_correlations.size(), D::Residual_description_rules::max_hops);
+  EXPECT_EQ(r.residual_correlation_length, 0u);
+  EXPECT_LT(std::abs(r.residual_hop_correlations.back()), 0.02);
+  EXPECT_LT(r.residual_axis_share, 0.6);
   EXPECT_NEAR(r.noise_level, 0.3, 0.06);                // the residual RMS of the kept candidate
   EXPECT_LT(PMP::face_normal_error(m, fandisk()), 2.6); // measured 2.528
 }
@@ -534,6 +543,9 @@ TEST(AutomaticParameters, SelectionIsThreadIndependent)
   EXPECT_FALSE(ra.self_check_errors.empty());
   EXPECT_EQ(ra.self_check_errors, rb.self_check_errors);
   EXPECT_EQ(ra.iterations, rb.iterations);
+  EXPECT_EQ(ra.residual_hop_correlations.size(), D::Residual_description_rules::max_hops);
+  EXPECT_EQ(ra.residual_hop_correlations, rb.residual_hop_correlations);
+  EXPECT_EQ(ra.residual_axis_share, rb.residual_axis_share);
   for(std::size_t c = 0; c < ra.candidates.size(); ++c)
   {
     EXPECT_EQ(ra.candidates[c].iterations, rb.candidates[c].iterations);
@@ -613,6 +625,97 @@ TEST(AutomaticParameters, ResidualStatisticsByHand)
             D::correlation_at_rms(runs[0].trajectory, level) < D::correlation_at_rms(runs[1].trajectory, level) ? 0u
                                                                                                                 : 1u);
   EXPECT_EQ(runs[0].score, D::correlation_at_rms(runs[0].trajectory, level));
+}
+
+// The description of a residual (residual_description.h) by hand: the
+// largest eigenvalue of small symmetric matrices, and residuals on a square
+// lattice (vertex (i, j) joined to its four neighbours, so that vertices h
+// edges apart are those h apart in Manhattan distance): white noise along
+// one axis is uncorrelated beyond an edge and lies along that axis; noise
+// in random directions spreads over the three; noise constant over 4 x 4
+// blocks is correlated as often as two vertices h apart share a block (3/4
+// at one edge, 0 beyond six); smoothing white noise longer correlates it
+// over more edges.
+TEST(AutomaticParameters, ResidualDescriptionByHand)
+{
+  EXPECT_DOUBLE_EQ(D::largest_symmetric_eigenvalue(1., 0., 0., 3., 0., 2.), 3.);
+  EXPECT_NEAR(D::largest_symmetric_eigenvalue(2., 1., 0., 2., 0., 1.), 3., 1e-12);
+  EXPECT_NEAR(D::largest_symmetric_eigenvalue(1., 1., 1., 1., 1., 1.), 3., 1e-12);
+  EXPECT_NEAR(D::largest_symmetric_eigenvalue(2., -1., 0., 2., -1., 2.), 2. + std::sqrt(2.), 1e-12);
+
+  const int n = 120;
+  D::Csr lattice;
+  lattice.offsets.push_back(0);
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+    {
+      for(const auto& d : {std::make_pair(-1, 0), std::make_pair(0, -1), std::make_pair(0, 1), std::make_pair(1, 0)})
+        if(i + d.first >= 0 && i + d.first < n && j + d.second >= 0 && j + d.second < n)
+          lattice.items.push_back(std::uint32_t((i + d.first) * n + j + d.second));
+      lattice.offsets.push_back(std::uint32_t(lattice.items.size()));
+    }
+  const std::vector<D::Vec3> zero(std::size_t(n * n), D::Vec3{0., 0., 0.});
+  std::mt19937 engine(7);
+  std::normal_distribution<double> normal(0., 1.);
+  std::vector<double> white(zero.size());
+  for(double& x : white)
+    x = normal(engine);
+  auto along_z = [&](const std::vector<double>& s) {
+    std::vector<D::Vec3> r(s.size());
+    for(std::size_t v = 0; v < s.size(); ++v)
+      r[v] = D::Vec3{0., 0., s[v]};
+    return r;
+  };
+  const D::Residual_description w = D::describe_residual(lattice, zero, along_z(white));
+  ASSERT_EQ(w.hop_correlations.size(), D::Residual_description_rules::max_hops);
+  for(double c : w.hop_correlations)
+    EXPECT_LT(std::abs(c), 0.05);
+  EXPECT_EQ(w.correlation_length, 0u);
+  EXPECT_NEAR(w.axis_share, 1., 1e-12);
+  // the same residual with the points moved instead of the input: r = input - points
+  const D::Residual_description minus = D::describe_residual(lattice, along_z(white), zero);
+  EXPECT_EQ(minus.hop_correlations, w.hop_correlations);
+
+  std::vector<D::Vec3> isotropic(zero.size());
+  for(D::Vec3& r : isotropic)
+    r = D::Vec3{normal(engine), normal(engine), normal(engine)};
+  const D::Residual_description iso = D::describe_residual(lattice, zero, isotropic);
+  EXPECT_GT(iso.axis_share, 1. / 3.);
+  EXPECT_LT(iso.axis_share, 0.36);
+
+  std::vector<double> blocks(zero.size()), block_value(std::size_t(n / 4 * n / 4));
+  for(double& x : block_value)
+    x = normal(engine);
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+      blocks[std::size_t(i * n + j)] = block_value[std::size_t(i / 4 * (n / 4) + j / 4)];
+  const D::Residual_description b = D::describe_residual(lattice, zero, along_z(blocks));
+  // the share of the pairs h apart within one block: 0.75, 0.531, 0.333,
+  // 0.156, 0.05, 0.01, 0, 0
+  const double same_block[] = {0.75, 0.531, 0.333, 0.156, 0.05, 0.01, 0., 0.};
+  for(std::size_t h = 0; h < 8; ++h)
+    EXPECT_NEAR(b.hop_correlations[h], same_block[h], 0.08) << "at " << h + 1 << " edges";
+  EXPECT_GE(b.correlation_length, 1u); // 2 expected (0.531 at two edges)
+  EXPECT_LE(b.correlation_length, 2u);
+
+  auto smoothed = [&](unsigned int rounds) {
+    std::vector<double> s = white, t(s.size());
+    for(unsigned int k = 0; k < rounds; ++k)
+    {
+      for(std::size_t v = 0; v < s.size(); ++v)
+      {
+        double sum = s[v];
+        for(std::uint32_t e = lattice.begin(v); e < lattice.end(v); ++e)
+          sum += s[lattice.items[e]];
+        t[v] = sum / double(1 + lattice.end(v) - lattice.begin(v));
+      }
+      s.swap(t);
+    }
+    return D::describe_residual(lattice, zero, along_z(s)).correlation_length;
+  };
+  const unsigned int short_length = smoothed(4), long_length = smoothed(32);
+  EXPECT_GE(short_length, 1u);
+  EXPECT_GT(long_length, short_length + 1);
 }
 
 // The sparse-noise test by hand on a grid (20 x 20 cells, edge 0.05): the

@@ -171,6 +171,12 @@ def test_the_paper_fandisk_figures(fandisk, noisy):
     assert radii[0] == report["relative_neighbor_radius"] == report["candidates"][report["chosen_candidate"]]["relative_neighbor_radius"]
     assert smallest[0] == min(checked)
     assert all(e >= 0.98 * smallest[0] for e in smallest[1:])
+    # the residual at the kept candidate's stop: independent noise removed, uncorrelated
+    # beyond one edge, spread over the directions of the normals
+    hops = report["residual_hop_correlations"]
+    assert len(hops) == 8 and abs(hops[-1]) < 0.02
+    assert report["residual_correlation_length"] == 0
+    assert 1 / 3 <= report["residual_axis_share"] < 0.6
     normals = report["face_normals"]
     assert normals.shape == F.shape
     assert np.allclose(np.linalg.norm(normals, axis=1), 1.0)

@@ -155,6 +155,25 @@ struct Intrinsic_denoising_report
   /// 2% below the candidate's (the lowest such); `self_check_errors` are then
   /// its angles and `relative_neighbor_radius` says which it is
   std::vector<double> self_check_smallest_errors;
+  /// with the automatic selection: why the kept candidate stopped, as the
+  /// correlation of its residual (input minus its result) at the stop
+  /// between vertices 1 to 8 edges apart (element h - 1: h edges), over
+  /// breadth-first searches from up to 2,000 vertices spread over the mesh.
+  /// The residual is that of the iteration its stopping rule rejected (the
+  /// first whose correlation across edges reached the threshold), or of its
+  /// last iteration if it ran to the limit. Independent noise removed leaves
+  /// about 0 beyond one edge; shape removed, and the noise of depth scans,
+  /// which is correlated from vertex to vertex, leave a residual correlated
+  /// over several edges. Descriptive: no rule of the mode reads it
+  std::vector<double> residual_hop_correlations;
+  /// the number of edges over which `residual_hop_correlations` stays at
+  /// least 0.5 (0 to 8)
+  unsigned int residual_correlation_length = 0;
+  /// the share of the same residual's energy along its principal direction:
+  /// 1/3 for a residual spread evenly over the directions, near 1 for one
+  /// along a single direction (as the noise of a depth image, along the
+  /// viewing rays)
+  double residual_axis_share = 0.;
   /// the number of faces of the sample on which the automatic selection
   /// chose its setting, and of the patches they form (see the named
   /// parameter `selection_sample_faces`); both 0 if it ran on the whole mesh.

@@ -716,6 +716,24 @@ inline bool short_selection(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
   return true;
 }
 
+// The automatic selection's lines on the noise it removed: dense or
+// sparse, and the residual at the kept candidate's stop.
+inline void describe_noise(std::ostream& out, const CGAL::Polygon_mesh_processing::Intrinsic_denoising_report& r)
+{
+  out << "noise kind: "
+      << (r.outlier_vertices > 0
+              ? "sparse: only the " + std::to_string(r.outlier_vertices) + " outlier vertices were denoised"
+              : std::string("dense: every vertex denoised"))
+      << " (residual correlation " << r.inlier_residual_correlation
+      << " at the vertices within 3 robust deviations; sparse from 0.1)\n";
+  const std::vector<double>& c = r.residual_hop_correlations;
+  if(c.size() >= 8)
+    out << "residual at the kept candidate's stop: correlation " << c[0] << ", " << c[1] << ", " << c[3] << ", " << c[7]
+        << " between vertices 1, 2, 4, 8 edges apart, at least 0.5 over " << r.residual_correlation_length
+        << " edges (independent noise removed: about 0 beyond one edge); " << 100. * r.residual_axis_share
+        << "% of its energy along one direction (33% if spread evenly)\n";
+}
+
 // A few readable lines on what intrinsic_denoising() chose and did.
 inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoising_report& r)
 {
@@ -739,12 +757,7 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
           << ", residual RMS " << k.residual_rms << ", correlation " << k.residual_correlation << ", flat edges "
           << k.flat_share << ", score " << k.score << "\n";
     }
-    out << "noise kind: "
-        << (r.outlier_vertices > 0
-                ? "sparse: only the " + std::to_string(r.outlier_vertices) + " outlier vertices were denoised"
-                : std::string("dense: every vertex denoised"))
-        << " (residual correlation " << r.inlier_residual_correlation
-        << " at the vertices within 3 robust deviations; sparse from 0.1)\n";
+    describe_noise(out, r);
     if(!r.self_check_errors.empty())
     {
       // the self-check's curve, and the iterations it kept

@@ -75,6 +75,7 @@ public:
     const std::size_t best = selection.choose();
     std::vector<Candidate_run>& runs = selection.runs();
     report_selection(selection, best);
+    report_residual(runs[best].stop_residual);
     if(runs[best].iterations == 0)
       return std::move(runs[best]);
 
@@ -215,6 +216,14 @@ private:
     report_.relative_neighbor_radius = radius;
     report_.neighbor_radius = radius * selection.centroid_distance();
     return changed;
+  }
+
+  // The residual's description (residual_description.h) in the report.
+  void report_residual(const Residual_description& d)
+  {
+    report_.residual_hop_correlations = d.hop_correlations;
+    report_.residual_correlation_length = d.correlation_length;
+    report_.residual_axis_share = d.axis_share;
   }
 
   // Describes the candidates and the one kept (`best`) in the report.

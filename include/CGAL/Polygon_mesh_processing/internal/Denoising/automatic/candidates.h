@@ -11,6 +11,7 @@
 #define CGAL_PMP_INTERNAL_DENOISING_CANDIDATES_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/automatic_rules.h>
+#include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/residual_description.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/automatic/residual_statistics.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/filter/filter_iterations.h>
 #include <CGAL/Polygon_mesh_processing/internal/Denoising/filter/intrinsic_setup.h>
@@ -39,6 +40,9 @@ struct Candidate_run
   bool stopped_by_correlation = false;
   double flat_share = -1.; // of the result (Selection_rules::flat_angle); -1: no interior edge
   double score = 0.;
+  // the residual at the stop (residual_description.h): that of the
+  // iteration the stopping rule rejected, or of the last one at the limit
+  Residual_description stop_residual;
   std::vector<Vec3> points;  // in input vertex order
   std::vector<Vec3> normals; // last filtered normals, in input face order (if asked)
 };
@@ -136,7 +140,8 @@ inline Intrinsic_kernel kernel_of_width(const Intrinsic_kernel& base, double sig
 // vertices have been renumbered for locality), from `input_points`, until an
 // iteration's residual correlation reaches Selection_rules::stop_correlation
 // (the result is then the iterate before it, which may be the input itself)
-// or `max_iterations`.
+// or `max_iterations`; the residual at the stop is described
+// (describe_residual()).
 template <typename ConcurrencyTag>
 Candidate_run run_candidate(const Intrinsic_setup& s, const Intrinsic_kernel& kernel, const Csr& adjacency,
                             const std::vector<Vec3>& input_points, const std::vector<char>& fixed,
@@ -156,6 +161,7 @@ Candidate_run run_candidate(const Intrinsic_setup& s, const Intrinsic_kernel& ke
         if(run.trajectory.back().correlation >= Selection_rules::stop_correlation)
         {
           run.stopped_by_correlation = true;
+          run.stop_residual = describe_residual(adjacency, p, input_points);
           return false;
         }
         run.iterations = k;
@@ -165,6 +171,8 @@ Candidate_run run_candidate(const Intrinsic_setup& s, const Intrinsic_kernel& ke
         return true;
       },
       recovery);
+  if(!run.stopped_by_correlation)
+    run.stop_residual = describe_residual(adjacency, kept, input_points);
   Face_data current;
   compute_face_data<ConcurrencyTag>(s.mesh, kept, current);
   run.flat_share = flat_edge_fraction<ConcurrencyTag>(s.mesh, current.normals, Selection_rules::flat_angle);
