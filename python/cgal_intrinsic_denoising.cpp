@@ -298,6 +298,7 @@ py::dict report_dict(const PMP::Intrinsic_denoising_report& r)
   d["residual_hop_correlations"] = r.residual_hop_correlations;
   d["residual_correlation_length"] = r.residual_correlation_length;
   d["residual_axis_share"] = r.residual_axis_share;
+  d["long_run_first_share"] = r.long_run_first_share;
   return d;
 }
 
@@ -447,8 +448,8 @@ void define_intrinsic(py::module_& m)
          std::optional<double> neighbor_radius, std::optional<double> relative_neighbor_radius,
          const std::string& path_strategy, bool use_step_length, long long geodesic_patch_rings,
          bool include_self_weight, bool prevent_folds, std::optional<bool> relax_along_surface,
-         long long selection_sample_faces, const py::object& constrained, const py::object& progress,
-         long long threads) {
+         long long selection_sample_faces, bool long_run_test, const py::object& constrained,
+         const py::object& progress, long long threads) {
         // argument checks that need no mesh (the library checks the values)
         PMP::internal::Denoising::Intrinsic_options o;
         o.automatic_parameters = automatic_parameters;
@@ -457,6 +458,7 @@ void define_intrinsic(py::module_& m)
         o.vertex_iterations = to_unsigned(vertex_iterations, "vertex_iterations");
         o.filter.geodesic_patch_rings = to_unsigned(geodesic_patch_rings, "geodesic_patch_rings");
         o.selection_sample_faces = to_unsigned(selection_sample_faces, "selection_sample_faces");
+        o.long_run_test = long_run_test;
         o.vertex_update = read_vertex_update(vertex_update);
         o.filter.path_strategy = read_paths(path_strategy);
         if(neighbor_radius && relative_neighbor_radius)
@@ -485,7 +487,8 @@ void define_intrinsic(py::module_& m)
       py::arg("prevent_folds") = true, py::arg("relax_along_surface") = py::none(),
       py::arg("selection_sample_faces") =
           static_cast<long long>(PMP::Intrinsic_denoising_report::default_selection_sample_faces),
-      py::arg("constrained") = py::none(), py::arg("progress") = py::none(), py::arg("threads") = 0,
+      py::arg("long_run_test") = false, py::arg("constrained") = py::none(), py::arg("progress") = py::none(),
+      py::arg("threads") = 0,
       R"(Denoises the triangle mesh (V, F) with intrinsic_denoising() (Algorithm 1 of "Mesh denoising via
 generalized intrinsic filter on 2D manifold") and returns (V_out, report).
 
@@ -501,7 +504,10 @@ automatic mode unless number_of_iterations is given. relax_along_surface: defaul
 selection runs (none of the sigmas, radii, number_of_iterations or noise_level given, stopping rule on);
 report['relaxed_vertices'] counts the vertices it moved. selection_sample_faces: on a mesh of more than
 three times this many faces the automatic selection chooses its setting on a sample of about this many
-faces (report['selection_sample_faces']), which then runs once on the whole mesh; 0: never.
+faces (report['selection_sample_faces']), which then runs once on the whole mesh; 0: never. long_run_test
+(for scans): when every candidate stops within 3 iterations, keep a run of 64 iterations of sigma 0.8 on 6 d
+if its first iteration made at least half of its change (report['long_run_first_share'], stop_reason
+'long_run').
 constrained: boolean array, one entry per vertex, True for vertices that never move. progress: callable progress(done, total) after each iteration.
 threads: 0 for all, or a limit (the result does not depend on it). Ctrl-C interrupts after the
 current iteration. Bad input raises ValueError or TypeError naming the problem.)");

@@ -20,6 +20,8 @@
 //       place in the sorted list of meshes, so the run stops, naming them, if
 //       the meshes of the directory and those of FILE differ.
 //   --stride N --offset M  only inputs M, M+N, M+2N, ... (quick looks)
+//   --long-run-test        the automatic mode with the named parameter
+//                          long_run_test (everyday and noise-free runs)
 //   --only TEXT            only inputs whose name contains TEXT
 //   corpus_benchmark --candidates
 //       per input and candidate of the automatic selection: E_n and
@@ -505,13 +507,17 @@ struct Row
 // Makes `in` noisy, runs the automatic mode and the fixed setting on it (each
 // timed), and fills the errors and times of `row`; returns the automatic
 // mode's report.
+// --long-run-test: the automatic mode with the named parameter long_run_test
+bool long_run_test = false;
+
 PMP::Intrinsic_denoising_report measure_auto_and_fixed(const Input& in, Row& row)
 {
   Mesh reference, noisy;
   make_noisy(in, reference, noisy);
   Mesh a = noisy, f = noisy;
   denoising_support::Stopwatch watch;
-  const PMP::Intrinsic_denoising_report rep = PMP::intrinsic_denoising<Tag>(a);
+  const PMP::Intrinsic_denoising_report rep =
+      PMP::intrinsic_denoising<Tag>(a, CGAL::parameters::long_run_test(long_run_test));
   row.auto_s = watch.seconds();
   watch.restart();
   PMP::intrinsic_denoising<Tag>(f, CGAL::parameters::automatic_parameters(false));
@@ -920,11 +926,13 @@ void noise_free_study(const std::vector<Input>& inputs, std::FILE* results)
       std::exit(1);
     }
     Mesh m = reference;
-    const PMP::Intrinsic_denoising_report rep = PMP::intrinsic_denoising<Tag>(m);
+    const PMP::Intrinsic_denoising_report rep =
+        PMP::intrinsic_denoising<Tag>(m, CGAL::parameters::long_run_test(long_run_test));
     const double En = PMP::face_normal_error(m, reference), Ev = PMP::vertex_position_error(m, reference);
     const char* stop = rep.stop_reason == PMP::Intrinsic_stop_reason::SECOND_PASS           ? "second pass"
                        : rep.stop_reason == PMP::Intrinsic_stop_reason::SELF_CHECK          ? "self-check"
                        : rep.stop_reason == PMP::Intrinsic_stop_reason::RESIDUAL_CORRELATED ? "residual"
+                       : rep.stop_reason == PMP::Intrinsic_stop_reason::LONG_RUN            ? "long run"
                                                                                             : "limit";
     std::printf("| %s%s | %zu | %.3f | %.3g | %u | %s |\n", in.mesh.file.c_str(),
                 in.mesh.irregular ? " (irregular)" : "", in.mesh.faces, En, Ev, rep.iterations, stop);
@@ -974,6 +982,8 @@ int main(int argc, char** argv)
       noise_free = true;
     else if(a == "--held-out")
       held_out = true;
+    else if(a == "--long-run-test")
+      long_run_test = true;
     else if(a == "--no-baselines")
       baselines = false;
     else if(a == "--build-reference")

@@ -35,6 +35,7 @@
 //       face normals from the input's, the residual's RMS and correlation,
 //       at k = 2, 4, ..., 64 the turn from iteration k / 2, the share of
 //       edges flatter than 1 degree, and the input's single-view share.
+//   --long-run-test  the automatic mode with the named parameter long_run_test
 //   --window W, --quantisation Q, --levels S1,S2,...  the simulation's
 //       block-matching window (pixels), disparity step (pixels) and sigma_d.
 
@@ -366,6 +367,8 @@ const char* stop_name(PMP::Intrinsic_stop_reason r)
     return "self-check";
   case PMP::Intrinsic_stop_reason::SECOND_PASS:
     return "second-pass";
+  case PMP::Intrinsic_stop_reason::LONG_RUN:
+    return "long-run";
   }
   return "?";
 }
@@ -377,12 +380,15 @@ struct Run
   double seconds = 0.;
 };
 
+// --long-run-test: the automatic runs with the named parameter long_run_test
+bool long_run_test = false;
+
 Run run_auto(const Mesh& noisy)
 {
   Run r;
   r.mesh = noisy;
   ds::Stopwatch w;
-  r.report = PMP::intrinsic_denoising<Tag>(r.mesh);
+  r.report = PMP::intrinsic_denoising<Tag>(r.mesh, CGAL::parameters::long_run_test(long_run_test));
   r.seconds = w.seconds();
   return r;
 }
@@ -901,6 +907,8 @@ int main(int argc, char** argv)
       for(std::string x; std::getline(list, x, ',');)
         noise_levels.push_back(std::atof(x.c_str()));
     }
+    else if(a == "--long-run-test")
+      long_run_test = true;
     else if(a == "--clean")
       clean.push_back(value());
     else if(a == "--stride")
@@ -924,6 +932,7 @@ int main(int argc, char** argv)
   std::fprintf(stderr,
                "usage: scan_benchmark --stats [--real DIR] [--tsv FILE] | --simulated [--results FILE] "
                "[--stride N] | --real DIR [--out OUTDIR] | --probe [--real DIR] [--stride N] [--clean FILE]...\n"
-               "  [--window W] [--quantisation Q] [--levels S1,S2,...]\n");
+               "  | --trace FILE [--real DIR] [--stride N] [--clean FILE]...\n"
+               "  [--long-run-test] [--window W] [--quantisation Q] [--levels S1,S2,...]\n");
   return 2;
 }

@@ -223,6 +223,7 @@ TEST(AutomaticParameters, NoisyFandiskAutomaticMode)
   EXPECT_EQ(r.residual_correlation_length, 0u);
   EXPECT_LT(std::abs(r.residual_hop_correlations.back()), 0.02);
   EXPECT_LT(r.residual_axis_share, 0.6);
+  EXPECT_EQ(r.long_run_first_share, -1.);               // the candidates ran on: no long-run test
   EXPECT_NEAR(r.noise_level, 0.3, 0.06);                // the residual RMS of the kept candidate
   EXPECT_LT(PMP::face_normal_error(m, fandisk()), 2.6); // measured 2.528
 }
@@ -625,6 +626,22 @@ TEST(AutomaticParameters, ResidualStatisticsByHand)
             D::correlation_at_rms(runs[0].trajectory, level) < D::correlation_at_rms(runs[1].trajectory, level) ? 0u
                                                                                                                 : 1u);
   EXPECT_EQ(runs[0].score, D::correlation_at_rms(runs[0].trajectory, level));
+}
+
+// A noise-free height field (CGAL's three_peaks): every candidate stops at
+// once, the long-run test (named parameter long_run_test) runs and reads the change as shape (its first
+// iteration made 0.11 of the long run's turn), and the mesh is kept.
+TEST(AutomaticParameters, LongRunTestKeepsANoiseFreeSurface)
+{
+  Mesh m = data_mesh("meshes/three_peaks.off");
+  const Mesh input = m;
+  const PMP::Intrinsic_denoising_report r =
+      PMP::intrinsic_denoising<CGAL::Parallel_if_available_tag>(m, CGAL::parameters::long_run_test(true));
+  EXPECT_GE(r.long_run_first_share, 0.);
+  EXPECT_LT(r.long_run_first_share, D::Selection_rules::long_run_first_share);
+  EXPECT_NE(r.stop_reason, PMP::Intrinsic_stop_reason::LONG_RUN);
+  EXPECT_EQ(r.iterations, 0u);
+  EXPECT_LT(PMP::face_normal_error(m, input), 1e-9);
 }
 
 // The description of a residual (residual_description.h) by hand: the

@@ -177,6 +177,7 @@ def test_the_paper_fandisk_figures(fandisk, noisy):
     assert len(hops) == 8 and abs(hops[-1]) < 0.02
     assert report["residual_correlation_length"] == 0
     assert 1 / 3 <= report["residual_axis_share"] < 0.6
+    assert report["long_run_first_share"] == -1.0  # the candidates ran on: no long-run test
     normals = report["face_normals"]
     assert normals.shape == F.shape
     assert np.allclose(np.linalg.norm(normals, axis=1), 1.0)
@@ -467,3 +468,14 @@ def test_file_errors(tmp_path):
     with pytest.raises(ValueError, match="unknown output format"):
         dn.write_mesh(str(tmp_path / "x.xyz"), V, F)
     assert not (tmp_path / "x.xyz").exists()
+
+
+def test_long_run_test_keeps_a_noise_free_surface():
+    V, F = read_off(os.path.join(MESHES, "three_peaks.off"))
+    W, report = dn.denoise(V, F)
+    assert report["long_run_first_share"] == -1.0  # off by default
+    W, report = dn.denoise(V, F, long_run_test=True)
+    # every candidate stopped at once; the long run's first iteration made 0.11 of its change: shape, kept as it is
+    assert 0.0 <= report["long_run_first_share"] < 0.5
+    assert report["stop_reason"] != "long_run" and report["iterations"] == 0
+    assert np.array_equal(W, V)

@@ -68,7 +68,7 @@ struct Settings
   std::string stop_when_converged;
   double spatial_exponent = 1., range_exponent = 1.;
   std::string paths = "square", threads = "all", vertex_update = "paper", relax;
-  bool step_length = false, self_weight = false, no_fold_guard = false, quiet = false;
+  bool step_length = false, self_weight = false, no_fold_guard = false, quiet = false, long_run_test = false;
   double noise = 0., impulsive = 1.;
   std::string noise_kind = "normal";
 };
@@ -240,6 +240,10 @@ po::options_description make_options(Settings& s)
     ("selection-sample", po::value(&s.selection_sample)->value_name("N")->default_value(s.selection_sample),
        "on a mesh of more than 3 N faces the automatic selection chooses its setting on a sample of about N faces "
        "(five patches), which then runs once on the whole mesh; 0: always on the whole mesh")
+    ("long-run-test", po::bool_switch(&s.long_run_test),
+       "for scans: when every candidate of the automatic selection stops within 3 iterations, keep a long run "
+       "(sigma 0.8, 6 d, 64 iterations) if its first iteration made at least half of its change, as noise correlated "
+       "between vertices does")
     ("step-length", po::bool_switch(&s.step_length), "multiply the terms of eq. 9 by the step lengths (eq. 4)")
     ("self-weight", po::bool_switch(&s.self_weight), "include face i's own normal in its average")
     ("vertex-update", po::value(&s.vertex_update)->value_name("UPDATE")->default_value(s.vertex_update),
@@ -336,7 +340,7 @@ std::string check_method_options(const Method_settings& m, const po::variables_m
     for(const char* name :
         {"iterations", "vertex-iterations", "sigma-spatial", "sigma-range", "radius", "relative-radius",
          "spatial-exponent", "range-exponent", "paths", "geodesic-rings", "step-length", "self-weight", "no-fold-guard",
-         "vertex-update", "fixed", "noise-level", "stop-when-converged"})
+         "vertex-update", "fixed", "noise-level", "stop-when-converged", "long-run-test"})
       if(vm.count(name) && !vm[name].defaulted())
         return std::string("--") + name + " applies to --method intrinsic only";
     if(vm.count("relax") &&
@@ -431,6 +435,7 @@ PMP::internal::Denoising::Intrinsic_options intrinsic_options(const Settings& s,
   o.prevent_folds = !s.no_fold_guard;
   o.vertex_update = S::find_name(S::vertex_update_names, s.vertex_update, false)->value;
   o.selection_sample_faces = static_cast<std::size_t>(s.selection_sample);
+  o.long_run_test = s.long_run_test;
   return o;
 }
 

@@ -309,6 +309,18 @@ void intrinsic_filter_face_normals(const TriangleMesh& tmesh, FaceNormalMap filt
       \cgalParamType{std::size_t}
       \cgalParamDefault{`100000`}
     \cgalParamNEnd
+    \cgalParamNBegin{long_run_test}
+      \cgalParamDescription{for scans: when every candidate of the automatic selection stops within 3 iterations
+                            (which both little noise and noise correlated between vertices, as a depth scan's, give),
+                            run \f$\sigma\f$ 0.8 on 6 \f$d\f$ for 64 iterations from the input and keep that run if
+                            its first iteration made at least half of its turn of the face normals (noise is used up
+                            early, shape is eroded steadily); otherwise, or with `false`, the mode goes on as
+                            without it. The report gives the share (`long_run_first_share`) and, if the run is
+                            kept, the stop reason `LONG_RUN`. Not the default: on \cgal's data set it also keeps the
+                            long run on one lightly noisy irregular mesh, which it smooths too much}
+      \cgalParamType{bool}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
     \cgalParamNBegin{progress_callback}
       \cgalParamDescription{called after each iteration with the number of iterations done and the largest number
                             (the stopping rule may end the run earlier); during the automatic selection, after each

@@ -702,7 +702,8 @@ std::string denoise_with_options(Mesh& mesh,
 // Runs of at most this many iterations by every candidate of the automatic
 // selection are what the whiteness test gives both on meshes with little
 // noise and on noise correlated from vertex to vertex (depth scans).
-constexpr unsigned int short_run_iterations = 3;
+constexpr unsigned int short_run_iterations =
+    CGAL::Polygon_mesh_processing::internal::Denoising::Selection_rules::short_run_iterations;
 
 // Whether the automatic selection ran and every candidate stopped, by its
 // residual correlation, within short_run_iterations iterations.
@@ -732,6 +733,35 @@ inline void describe_noise(std::ostream& out, const CGAL::Polygon_mesh_processin
         << " between vertices 1, 2, 4, 8 edges apart, at least 0.5 over " << r.residual_correlation_length
         << " edges (independent noise removed: about 0 beyond one edge); " << 100. * r.residual_axis_share
         << "% of its energy along one direction (33% if spread evenly)\n";
+}
+
+// The lines on the long-run test and, when every candidate stopped at once
+// and no long run was kept, the note on what that means.
+inline void describe_long_run(std::ostream& out, const CGAL::Polygon_mesh_processing::Intrinsic_denoising_report& r)
+{
+  using Reason = CGAL::Polygon_mesh_processing::Intrinsic_stop_reason;
+  if(r.long_run_first_share >= 0.)
+    out << "long-run test (every candidate stopped at once): the first of 64 iterations of sigma 0.8 on 6 d made "
+        << r.long_run_first_share << " of their turn of the normals (the long run is kept from 0.5): "
+        << (r.stop_reason == Reason::LONG_RUN ? "kept, the change was used up early, as noise is"
+                                              : "not kept, the change went on, as shape erosion does")
+        << "\n";
+  if(short_selection(r) && r.stop_reason != Reason::LONG_RUN)
+  {
+    out << "note: every candidate's residual was correlated across edges within " << short_run_iterations
+        << " iterations. Either the mesh has little noise (or a coarse shape the filter would take for noise), or "
+           "its noise is itself correlated from vertex to vertex, as the noise of depth scans and of surfaces "
+           "reconstructed from them is; "
+        << (r.long_run_first_share < 0. ? "the automatic mode cannot tell the two apart"
+                                        : "the long-run test read the change as shape")
+        << ", so the mesh is left nearly as it is. For a scan, ";
+    if(r.long_run_first_share < 0.)
+      out << "try --long-run-test (it keeps a long run if its first iteration made most of its change, as noise "
+             "does), or ";
+    out << "choose the parameters: --fixed (the paper's setting) for light scanner noise, or for the strong, "
+           "blotchy noise of a depth camera a wider and longer setting such as -k 60 --relative-radius 6 "
+           "--sigma-spatial 0.8 --sigma-range 0.8 (see the manual, real scans).\n";
+  }
 }
 
 // A few readable lines on what intrinsic_denoising() chose and did.
@@ -797,14 +827,7 @@ inline std::string describe(const CGAL::Polygon_mesh_processing::Intrinsic_denoi
     out << "tangential relaxation: " << r.relaxed_vertices
         << " vertices moved along the surface after the last iteration (each by at most half its denoising "
         << "displacement)\n";
-  if(short_selection(r))
-    out << "note: every candidate's residual was correlated across edges within " << short_run_iterations
-        << " iterations. Either the mesh has little noise (or a coarse shape the filter would take for noise), or "
-           "its noise is itself correlated from vertex to vertex, as the noise of depth scans and of surfaces "
-           "reconstructed from them is; the automatic mode cannot tell the two apart and leaves the mesh nearly "
-           "as it is. For a scan, choose the parameters: --fixed (the paper's setting) for light scanner noise, "
-           "or for the strong, blotchy noise of a depth camera a wider and longer setting such as -k 60 "
-           "--relative-radius 6 --sigma-spatial 0.8 --sigma-range 0.8 (see the manual, real scans).\n";
+  describe_long_run(out, r);
   return out.str();
 }
 

@@ -46,7 +46,10 @@ inline constexpr Enum_name<Stop_reason> stop_reason_names[] = {
     {Stop_reason::SELF_CHECK, "self-check", "self_check",
      "the self-check chose the number of iterations or the radius"},
     {Stop_reason::SECOND_PASS, "second-pass", "second_pass",
-     "the second pass read the change as shape, not noise: input kept"}};
+     "the second pass read the change as shape, not noise: input kept"},
+    {Stop_reason::LONG_RUN, "long-run", "long_run",
+     "the long-run test: every candidate stopped at once, and a long run's first iteration made most of its change, "
+     "as correlated noise does"}};
 
 // The entry of `value` in `table` (the first entry if there is none).
 template <typename Enum, std::size_t N>

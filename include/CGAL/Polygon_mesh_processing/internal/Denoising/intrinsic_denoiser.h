@@ -210,6 +210,7 @@ private:
     o.keep_normals = keep_normals;
     o.vertex_update = o_.vertex_update;
     o.relax = relax_;
+    o.long_run_test = o_.long_run_test;
     return o;
   }
 

@@ -37,6 +37,7 @@ struct Intrinsic_options
   Vertex_update vertex_update = Vertex_update::PAPER;
   bool prevent_folds = true;
   std::size_t selection_sample_faces = Sample_rules::faces;
+  bool long_run_test = false; // Selection_rules' long-run test in the automatic selection
 };
 
 // The options of `np`: only those it holds are set.
@@ -63,6 +64,7 @@ Intrinsic_options read_intrinsic_options(const NamedParameters& np)
   o.prevent_folds = choose_parameter(get_parameter(np, internal_np::prevent_folds), true);
   o.selection_sample_faces =
       choose_parameter(get_parameter(np, internal_np::selection_sample_faces), Sample_rules::faces);
+  o.long_run_test = choose_parameter(get_parameter(np, internal_np::long_run_test), false);
   return o;
 }
 

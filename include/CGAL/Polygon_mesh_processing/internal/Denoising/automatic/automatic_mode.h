@@ -37,7 +37,8 @@ struct Automatic_mode_options
   bool prevent_folds = true;
   bool keep_normals = false; // the last filtered normals are returned too
   Vertex_update vertex_update = Vertex_update::PAPER;
-  bool relax = false; // the result relaxed along the surface
+  bool relax = false;         // the result relaxed along the surface
+  bool long_run_test = false; // Selection_rules' long-run test when every candidate stops at once
 };
 
 // The automatic mode, writing what it does to `report`. A candidate setup
@@ -76,6 +77,16 @@ public:
     std::vector<Candidate_run>& runs = selection.runs();
     report_selection(selection, best);
     report_residual(runs[best].stop_residual);
+    if(options_.long_run_test && short_selection(runs))
+    {
+      Candidate_run long_run = long_run_test(make_setup, selection, constrained);
+      if(long_run.iterations > 0)
+      {
+        if(options_.relax && finish)
+          report_.relaxed_vertices = selection.relax(long_run);
+        return long_run;
+      }
+    }
     if(runs[best].iterations == 0)
       return std::move(runs[best]);
 
@@ -216,6 +227,46 @@ private:
     report_.relative_neighbor_radius = radius;
     report_.neighbor_radius = radius * selection.centroid_distance();
     return changed;
+  }
+
+  // Whether every candidate stopped by correlation within
+  // Selection_rules::short_run_iterations iterations.
+  static bool short_selection(const std::vector<Candidate_run>& runs)
+  {
+    for(const Candidate_run& r : runs)
+      if(!r.stopped_by_correlation || r.iterations > Selection_rules::short_run_iterations)
+        return false;
+    return !runs.empty();
+  }
+
+  // The long-run test of Selection_rules: the long-run candidate from the
+  // input for Selection_rules::long_run_iterations iterations on the paths
+  // of its radius; returned (and reported) if its first iteration made at
+  // least Selection_rules::long_run_first_share of the whole run's turn of
+  // the face normals, else a run of no iteration (the share is reported
+  // either way).
+  template <typename MakeSetup>
+  Candidate_run long_run_test(const MakeSetup& make_setup, Automatic_selection<ConcurrencyTag>& selection,
+                              const std::vector<char>& constrained)
+  {
+    const Selection_rules::Candidate& c = Selection_rules::long_run_candidate;
+    if(!selection.reuse_paths(c.relative_radius, constrained))
+      selection.setup_paths(make_setup(c), constrained);
+    const Intrinsic_kernel kernel = selection.kernel_of_width(c.sigma);
+    Candidate_run first = selection.run_from_input(kernel, 1);
+    const double first_turn = selection.turn_from_input(first);
+    Candidate_run run = selection.run_on(std::move(first), kernel, Selection_rules::long_run_iterations - 1);
+    const double turn = selection.turn_from_input(run);
+    report_.long_run_first_share = turn > 0. ? first_turn / turn : 0.;
+    if(!(report_.long_run_first_share >= Selection_rules::long_run_first_share))
+      return Candidate_run();
+    report_.sigma_spatial = report_.sigma_range = c.sigma;
+    report_.relative_neighbor_radius = c.relative_radius;
+    report_.neighbor_radius = c.relative_radius * selection.centroid_distance();
+    report_.iterations = report_.maximum_iterations = run.iterations;
+    report_.stop_reason = Intrinsic_stop_reason::LONG_RUN;
+    report_.displacement = run.trajectory.back().rms;
+    return run;
   }
 
   // The residual's description (residual_description.h) in the report.

@@ -125,6 +125,29 @@ struct Selection_rules
   // (it costs as many again): a longer run is evidence of noise in itself,
   // and on the corpus the share after one is at most 0.24 (111 inputs).
   static constexpr unsigned int second_pass_max_iterations = 8;
+  // The long-run test (Automatic_mode::long_run_test(); named parameter
+  // long_run_test, off by default: see below). When every
+  // candidate stopped by correlation within short_run_iterations
+  // iterations, the evidence cannot tell little noise from noise correlated
+  // between vertices, as a depth scan's is (its finest part, which the
+  // first iterations remove, leaves no rough residual). The long-run
+  // candidate then runs long_run_iterations iterations from the input; if
+  // its first iteration made at least long_run_first_share of the turn of
+  // the face normals of the whole run, the change was used up early, as
+  // noise is, not eroded steadily, as shape is, and the long run is the
+  // result. Measured with scan_benchmark --trace (the user manual, real
+  // scans): the share reads 0.70 on the real Kinect cone, 0.70 on the
+  // paper's iron scan and 0.62 on its rabbit, 0.45 to 0.75 on simulated CAD
+  // scans; at most 0.44 on 17 noise-free meshes of CGAL's data set
+  // (b9_mesh 0.44) and at most 0.472 on the simulated scans that a long run
+  // makes worse than the mode's short one. On the development corpus it
+  // would keep the long run on one input, the irregular head.off with
+  // light Gaussian noise (0.506): E_n 9.36 to 16.91 degrees, E_v worse than
+  // the noisy input's; so it is not the default.
+  static constexpr unsigned int short_run_iterations = 3;
+  static constexpr Candidate long_run_candidate = {0.8, 6.};
+  static constexpr unsigned int long_run_iterations = 64;
+  static constexpr double long_run_first_share = 0.5;
 };
 
 // When the automatic selection runs on a sample, and how big it is.

@@ -335,6 +335,15 @@ public:
             mean_angle_degrees(second.normals, result.normals)};
   }
 
+  // The mean angle in degrees between the face normals of the result of
+  // `run` and the input's.
+  double turn_from_input(const Candidate_run& run) const
+  {
+    Face_data f;
+    compute_face_data<ConcurrencyTag>(setup_.mesh, setup_.mesh.vertex_values_from_input_order(run.points), f);
+    return mean_angle_degrees(f.normals, setup_.input_faces.normals);
+  }
+
   std::vector<Candidate_run>& runs() { return runs_; }
   const std::vector<Candidate_run>& runs() const { return runs_; }
   double mean_edge_length_of_input() const { return mean_edge_; }

@@ -61,6 +61,9 @@ CGAL_add_named_parameter(noise_level_t, noise_level, noise_level)
 CGAL_add_named_parameter(stop_when_converged_t, stop_when_converged, stop_when_converged)
 // the automatic selection's sample size on big meshes (0: the whole mesh)
 CGAL_add_named_parameter(selection_sample_faces_t, selection_sample_faces, selection_sample_faces)
+// whether the automatic selection may keep a long run when every candidate
+// stops at once (the long-run test; default false)
+CGAL_add_named_parameter(long_run_test_t, long_run_test, long_run_test)
 // a callable (iterations done, maximum iterations) called after each iteration
 CGAL_add_named_parameter(progress_callback_t, progress_callback, progress_callback)
 
