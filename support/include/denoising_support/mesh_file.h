@@ -699,23 +699,9 @@ std::string denoise_with_options(Mesh& mesh,
   return std::string();
 }
 
-// Runs of at most this many iterations by every candidate of the automatic
-// selection are what the whiteness test gives both on meshes with little
-// noise and on noise correlated from vertex to vertex (depth scans).
-constexpr unsigned int short_run_iterations =
-    CGAL::Polygon_mesh_processing::internal::Denoising::Selection_rules::short_run_iterations;
-
-// Whether the automatic selection ran and every candidate stopped, by its
-// residual correlation, within short_run_iterations iterations.
-inline bool short_selection(const CGAL::Polygon_mesh_processing::Intrinsic_denoising_report& r)
-{
-  if(r.candidates.empty())
-    return false;
-  for(const auto& c : r.candidates)
-    if(!c.stopped_by_correlation || c.iterations > short_run_iterations)
-      return false;
-  return true;
-}
+// Whether every candidate of the automatic selection stopped at once (the
+// library's test, which the long-run test reads too).
+using CGAL::Polygon_mesh_processing::internal::Denoising::short_selection;
 
 // The automatic selection's lines on the noise it removed: dense or
 // sparse, and the residual at the kept candidate's stop.
@@ -740,15 +726,18 @@ inline void describe_noise(std::ostream& out, const CGAL::Polygon_mesh_processin
 inline void describe_long_run(std::ostream& out, const CGAL::Polygon_mesh_processing::Intrinsic_denoising_report& r)
 {
   using Reason = CGAL::Polygon_mesh_processing::Intrinsic_stop_reason;
+  typedef CGAL::Polygon_mesh_processing::internal::Denoising::Selection_rules Rules;
   if(r.long_run_first_share >= 0.)
-    out << "long-run test (every candidate stopped at once): the first of 64 iterations of sigma 0.8 on 6 d made "
-        << r.long_run_first_share << " of their turn of the normals (the long run is kept from 0.5): "
+    out << "long-run test (every candidate stopped at once): the first of " << Rules::long_run_iterations
+        << " iterations of sigma " << Rules::long_run_candidate.sigma << " on "
+        << Rules::long_run_candidate.relative_radius << " d made " << r.long_run_first_share
+        << " of their turn of the normals (the long run is kept from " << Rules::long_run_first_share << "): "
         << (r.stop_reason == Reason::LONG_RUN ? "kept, the change was used up early, as noise is"
                                               : "not kept, the change went on, as shape erosion does")
         << "\n";
   if(short_selection(r) && r.stop_reason != Reason::LONG_RUN)
   {
-    out << "note: every candidate's residual was correlated across edges within " << short_run_iterations
+    out << "note: every candidate's residual was correlated across edges within " << Rules::short_run_iterations
         << " iterations. Either the mesh has little noise (or a coarse shape the filter would take for noise), or "
            "its noise is itself correlated from vertex to vertex, as the noise of depth scans and of surfaces "
            "reconstructed from them is; "

@@ -30,6 +30,18 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Denoising {
 
+// Whether the automatic selection of `r` ran and every candidate stopped by
+// its residual correlation within Selection_rules::short_run_iterations
+// iterations: what the stopping rule gives both on meshes with little noise
+// and on noise correlated from vertex to vertex (depth scans).
+inline bool short_selection(const Intrinsic_denoising_report& r)
+{
+  for(const Intrinsic_candidate_report& c : r.candidates)
+    if(!c.stopped_by_correlation || c.iterations > Selection_rules::short_run_iterations)
+      return false;
+  return !r.candidates.empty();
+}
+
 // The options of intrinsic_denoising() that the automatic mode reads.
 struct Automatic_mode_options
 {
@@ -77,7 +89,7 @@ public:
     std::vector<Candidate_run>& runs = selection.runs();
     report_selection(selection, best);
     report_residual(runs[best].stop_residual);
-    if(options_.long_run_test && short_selection(runs))
+    if(options_.long_run_test && short_selection(report_))
     {
       Candidate_run long_run = long_run_test(make_setup, selection, constrained);
       if(long_run.iterations > 0)
@@ -227,16 +239,6 @@ private:
     report_.relative_neighbor_radius = radius;
     report_.neighbor_radius = radius * selection.centroid_distance();
     return changed;
-  }
-
-  // Whether every candidate stopped by correlation within
-  // Selection_rules::short_run_iterations iterations.
-  static bool short_selection(const std::vector<Candidate_run>& runs)
-  {
-    for(const Candidate_run& r : runs)
-      if(!r.stopped_by_correlation || r.iterations > Selection_rules::short_run_iterations)
-        return false;
-    return !runs.empty();
   }
 
   // The long-run test of Selection_rules: the long-run candidate from the

@@ -99,7 +99,7 @@ inline Residual_description describe_residual(const Csr& adjacency, const std::v
   const std::size_t nv = adjacency.size();
   std::vector<double> cross(Rules::max_hops, 0.), energy(Rules::max_hops, 0.);
   std::vector<std::uint32_t> hops(nv, std::uint32_t(-1));
-  std::vector<std::uint32_t> reached, next_ring;
+  std::vector<std::uint32_t> reached;
   const std::size_t stride = std::max<std::size_t>(1, nv / Rules::sources);
   for(std::size_t s = 0; s < nv; s += stride)
   {
